@@ -1,0 +1,11 @@
+# Warnings and sanitizers applied to Bagnold's own targets (not to third-party headers).
+function(bagnold_target_options target)
+  target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Wshadow)
+  if(BAGNOLD_WERROR)
+    target_compile_options(${target} PRIVATE -Werror)
+  endif()
+  if(BAGNOLD_SANITIZE)
+    target_compile_options(${target} PRIVATE -fsanitize=${BAGNOLD_SANITIZE} -fno-omit-frame-pointer)
+    target_link_options(${target} PRIVATE -fsanitize=${BAGNOLD_SANITIZE})
+  endif()
+endfunction()

@@ -1,0 +1,121 @@
+#pragma once
+// The resolved deck: every value a run uses, in SI units, after defaults, overrides and checks.
+// The keys, units, defaults and ranges are declared once, in src/deck/sections.cpp; the key
+// reference (docs/deck.md) is generated from those declarations by `bagnold keys`.
+
+#include <array>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "models/coefficients.hpp"
+#include "models/material.hpp"
+
+namespace bagnold::deck {
+
+struct RunControl {
+  std::string title;
+  double end_time = 0.0;     // [s]
+  double dt_initial = 1e-4;  // [s]
+  double dt_min = 1e-7;      // [s]
+  double dt_max = 1e-2;      // [s]
+};
+
+struct Physics {
+  std::array<double, 3> gravity{0.0, 0.0, -9.81};  // [m/s²]
+};
+
+struct Axis {
+  double min = 0.0;    // [m]
+  double max = 0.0;    // [m]
+  int cells = 1;
+  double ratio = 1.0;  // width of the last cell / width of the first (geometric stretching)
+};
+
+struct Grid {
+  Axis x, y, z;
+  std::vector<std::string> periodic;  // subset of {"x", "y", "z"}
+  bool is_periodic(int direction) const;
+};
+
+// A primitive that blocks cells (their centres) inside or outside of it.
+struct Block {
+  std::string shape;  // box | half_space | cylinder | cone
+  std::string blocks = "inside";  // inside | outside
+  std::array<double, 3> min{0, 0, 0}, max{0, 0, 0};       // box [m]
+  std::array<double, 3> point{0, 0, 0}, normal{0, 0, 1};  // half_space: blocks where (x−p)·n > 0
+  std::array<double, 3> base{0, 0, 0}, axis{0, 0, 1};     // cylinder / cone: base centre, axis
+  double length = 0.0;      // [m] along the axis from the base
+  double radius = 0.0;      // [m] at the base
+  double top_radius = 0.0;  // [m] at base + length (cone only)
+};
+
+struct Geometry {
+  std::string default_wall = "no_slip_wall";
+  std::vector<Block> blocks;
+};
+
+// A boundary region: the boundary cells (outside the domain or blocked, next to fluid) whose
+// centres fall in [min, max], restricted to one face of the domain or to internal walls.
+struct BoundaryRegion {
+  std::string name;
+  std::string type;           // no_slip_wall | free_slip_wall | moving_wall | pressure_outflow |
+                              // pressure_inflow | mass_inflow
+  std::string face = "any";   // x- | x+ | y- | y+ | z- | z+ | internal | any
+  std::array<double, 3> min{-1e30, -1e30, -1e30}, max{1e30, 1e30, 1e30};
+  double pressure = 101325.0;                 // [Pa] pressure inflow/outflow
+  std::array<double, 3> wall_velocity{0, 0, 0};    // [m/s] moving wall
+  std::array<double, 3> gas_velocity{0, 0, 0};     // [m/s] mass inflow
+  std::array<double, 3> solids_velocity{0, 0, 0};  // [m/s] mass inflow
+  double solids_fraction = 0.0;               // ε_s of the inflow [-]
+};
+
+struct Gas {
+  bool enabled = true;
+  double density = 1.2;        // ρ_g [kg/m³]
+  double viscosity = 1.8e-5;   // μ_g [Pa s]
+  double reference_pressure = 101325.0;  // [Pa]
+};
+
+struct Solids {
+  bool enabled = true;
+  models::Material material;
+};
+
+struct ModelChoice {
+  std::string name;
+  models::Coefficients coefficients;  // resolved: every declared coefficient present
+};
+
+struct Models {
+  ModelChoice solids_stress;
+};
+
+struct InitialRegion {
+  std::array<double, 3> min{-1e30, -1e30, -1e30}, max{1e30, 1e30, 1e30};
+  double solids_fraction = 0.0;
+  std::array<double, 3> gas_velocity{0, 0, 0};
+  std::array<double, 3> solids_velocity{0, 0, 0};
+};
+
+struct Output {
+  std::string directory;
+  double snapshot_interval = 0.1;  // [s]
+  std::string progress = "auto";   // auto | always | never
+};
+
+struct Deck {
+  std::string source;  // path of the deck file
+  RunControl run;
+  Physics physics;
+  Grid grid;
+  Geometry geometry;
+  std::vector<BoundaryRegion> boundaries;
+  Gas gas;
+  Solids solids;
+  Models models;
+  std::vector<InitialRegion> initial;
+  Output output;
+};
+
+}  // namespace bagnold::deck

@@ -1,0 +1,494 @@
+#include "src/deck/load.hpp"
+
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "models/stress/solids_stress.hpp"
+#include "src/deck/sections.hpp"
+#include "src/util/closest_match.hpp"
+
+namespace bagnold::deck {
+
+namespace {
+
+const std::vector<std::string> top_level_sections = {
+    "run", "physics", "grid", "geometry", "boundary", "gas", "solids", "models", "initial",
+    "output"};
+
+toml::source_region no_source(const std::string& file) {
+  toml::source_region r;
+  r.path = std::make_shared<const std::string>(file);
+  return r;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Command-line overrides
+
+struct PathPart {
+  std::string name;
+  int index = -1;  // element of an array of tables, or -1
+};
+
+std::vector<PathPart> split_path(const std::string& path) {
+  std::vector<PathPart> parts;
+  std::stringstream s(path);
+  std::string item;
+  while (std::getline(s, item, '.')) {
+    PathPart part;
+    const auto bracket = item.find('[');
+    if (bracket != std::string::npos && item.back() == ']') {
+      part.name = item.substr(0, bracket);
+      try {
+        part.index = std::stoi(item.substr(bracket + 1, item.size() - bracket - 2));
+      } catch (const std::exception&) {
+        return {};
+      }
+      if (part.index < 0) return {};
+    } else {
+      part.name = item;
+    }
+    if (part.name.empty()) return {};
+    parts.push_back(part);
+  }
+  return parts;
+}
+
+// Applies "a.b.c=value": the value is read as TOML (1e-3, true, [0, 0, -9.81], "text"); a bare
+// word that is not TOML is taken as a string, so --set models.solids_stress.model=mkt works.
+void apply_override(toml::table& root, const std::string& assignment, Diagnostics& diag) {
+  const auto equals = assignment.find('=');
+  const std::string origin = "--set " + assignment;
+  if (equals == std::string::npos || equals == 0) {
+    diag.error(no_source(origin), "", "expected KEY=VALUE, e.g. --set solids.diameter=1e-3");
+    return;
+  }
+  const std::string path = assignment.substr(0, equals);
+  const std::string text = assignment.substr(equals + 1);
+  const auto parts = split_path(path);
+  if (parts.empty()) {
+    diag.error(no_source(origin), path, "not a valid key path (use dotted.names or name[index])");
+    return;
+  }
+  toml::table parsed;
+  try {
+    parsed = toml::parse("value = " + text, origin);
+  } catch (const toml::parse_error&) {
+    parsed = toml::table{};
+    parsed.insert("value", text);
+  }
+  toml::table* table = &root;
+  for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
+    const auto& part = parts[i];
+    if (part.index >= 0) {
+      auto* array = table->get_as<toml::array>(part.name);
+      if (!array || part.index >= static_cast<int>(array->size()) ||
+          !(*array)[static_cast<std::size_t>(part.index)].is_table()) {
+        diag.error(no_source(origin), path,
+                   "the deck has no [[" + part.name + "]] element " + std::to_string(part.index));
+        return;
+      }
+      table = (*array)[static_cast<std::size_t>(part.index)].as_table();
+    } else {
+      auto* node = table->get(part.name);
+      if (!node) {
+        table->insert(part.name, toml::table{});
+        node = table->get(part.name);
+      }
+      if (!node->is_table()) {
+        diag.error(no_source(origin), path, "'" + part.name + "' is not a table");
+        return;
+      }
+      table = node->as_table();
+    }
+  }
+  if (parts.back().index >= 0) {
+    diag.error(no_source(origin), path, "cannot replace a whole array element; set its keys");
+    return;
+  }
+  table->insert_or_assign(parts.back().name, *parsed.get("value"));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Model coefficients: [models.<family>.<model>] tables checked against the registry's specs.
+
+void read_coefficients(const toml::table& table, const std::string& path,
+                       const std::vector<models::CoefficientSpec>& specs,
+                       models::Coefficients& out, Diagnostics& diag) {
+  std::vector<std::string> names;
+  for (const auto& spec : specs) names.push_back(spec.name);
+  check_unknown_keys(table, path, names, diag);
+  for (const auto& spec : specs) {
+    const toml::node* node = table.get(spec.name);
+    if (!node) continue;
+    const std::string key_path = path + "." + spec.name;
+    if (std::holds_alternative<double>(spec.default_value)) {
+      double x = 0;
+      if (!read_value(*node, x) || !std::isfinite(x)) {
+        diag.error(node->source(), key_path, "expected a real number [" + spec.unit + "]");
+      } else if (x < spec.min || x > spec.max) {
+        diag.error(node->source(), key_path,
+                   "value " + to_toml_text(x) + " is out of range: expected a real number in [" +
+                       to_toml_text(spec.min) + ", " + to_toml_text(spec.max) + "]");
+      } else {
+        out[spec.name] = x;
+      }
+    } else {
+      std::string s;
+      if (!read_value(*node, s)) {
+        diag.error(node->source(), key_path, "expected a string, one of: " + join(spec.choices));
+      } else if (!spec.choices.empty() &&
+                 std::find(spec.choices.begin(), spec.choices.end(), s) == spec.choices.end()) {
+        std::string message = "unknown value \"" + s + "\"";
+        if (auto guess = closest_match(s, spec.choices)) message += "; did you mean \"" + *guess + "\"?";
+        diag.error(node->source(), key_path, message + " (one of: " + join(spec.choices) + ")");
+      } else {
+        out[spec.name] = s;
+      }
+    }
+  }
+}
+
+template <class Base>
+void read_model_choice(const toml::table* table, const std::string& path,
+                       const Section<ModelChoice>& section, const models::Registry<Base>& registry,
+                       ModelChoice& out, Diagnostics& diag) {
+  const auto names = registry.names();
+  Section<ModelChoice> with_models = section;
+  with_models.also_known = names;
+  read_section(table, with_models, path, out, diag);
+  // Every model's table is checked, selected or not, so a misspelt constant never hides.
+  if (table) {
+    for (const auto& entry : registry.entries()) {
+      if (const auto* sub = table->get_as<toml::table>(entry.name)) {
+        models::Coefficients ignored;
+        read_coefficients(*sub, path + "." + entry.name, entry.coefficients,
+                          entry.name == out.name ? out.coefficients : ignored, diag);
+      }
+    }
+  }
+  const auto it = std::find(names.begin(), names.end(), out.name);
+  if (it == names.end()) {
+    const toml::node* node = table ? table->get("model") : nullptr;
+    std::string message = "unknown model \"" + out.name + "\"";
+    if (auto guess = closest_match(out.name, names)) message += "; did you mean \"" + *guess + "\"?";
+    diag.error(node ? node->source() : toml::source_region{}, path + ".model",
+               message + " (known: " + join(names) + ")");
+    return;
+  }
+  out.coefficients = models::resolve(registry.find(out.name).coefficients, out.coefficients);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Sections
+
+const toml::table* subtable(const toml::table& parent, const std::string& name,
+                            const std::string& path, Diagnostics& diag) {
+  const toml::node* node = parent.get(name);
+  if (!node) return nullptr;
+  if (!node->is_table()) {
+    diag.error(node->source(), path, "expected a table [" + path + "]");
+    return nullptr;
+  }
+  return node->as_table();
+}
+
+template <class T>
+std::vector<T> read_array_of_tables(const toml::table& parent, const std::string& name,
+                                    const std::string& path, const Section<T>& section,
+                                    Diagnostics& diag) {
+  std::vector<T> out;
+  const toml::node* node = parent.get(name);
+  if (!node) return out;
+  const auto* array = node->as_array();
+  if (!array || !array->is_array_of_tables()) {
+    diag.error(node->source(), path, "expected an array of tables: [[" + path + "]]");
+    return out;
+  }
+  for (std::size_t i = 0; i < array->size(); ++i) {
+    T value{};
+    read_section((*array)[i].as_table(), section, path + "[" + std::to_string(i) + "]", value, diag);
+    out.push_back(value);
+  }
+  return out;
+}
+
+void read_grid(const toml::table& root, Deck& deck, Diagnostics& diag) {
+  const toml::table* grid = subtable(root, "grid", "grid", diag);
+  if (!grid) {
+    diag.error(root.source(), "grid", "missing required table [grid] with [grid.x], [grid.y], [grid.z]");
+    return;
+  }
+  read_section(grid, grid_section(), "grid", deck.grid, diag);
+  Axis* axes[] = {&deck.grid.x, &deck.grid.y, &deck.grid.z};
+  const char* names[] = {"x", "y", "z"};
+  for (int d = 0; d < 3; ++d) {
+    const std::string path = std::string("grid.") + names[d];
+    const toml::table* axis = subtable(*grid, names[d], path, diag);
+    read_section(axis, axis_section(), path, *axes[d], diag, grid->source());
+    if (axis && !(axes[d]->max > axes[d]->min)) {
+      const toml::node* max = axis->get("max");
+      diag.error(max ? max->source() : axis->source(), path + ".max",
+                 "must be greater than " + path + ".min (" + to_toml_text(axes[d]->min) + ")");
+    }
+  }
+}
+
+void check_blocks(const toml::table& root, Deck& deck, Diagnostics& diag) {
+  const auto* geometry = root.get_as<toml::table>("geometry");
+  const auto* array = geometry ? geometry->get_as<toml::array>("block") : nullptr;
+  if (!array) return;
+  for (std::size_t i = 0; i < deck.geometry.blocks.size() && i < array->size(); ++i) {
+    const auto* table = (*array)[i].as_table();
+    const std::string path = "geometry.block[" + std::to_string(i) + "]";
+    const auto needed = block_shape_keys(deck.geometry.blocks[i].shape);
+    if (needed.empty()) continue;  // bad shape already reported
+    for (const auto& name : needed)
+      if (!table->get(name))
+        diag.error(table->source(), path + "." + name,
+                   "missing key required by shape \"" + deck.geometry.blocks[i].shape + "\"");
+    for (const auto& [k, node] : *table) {
+      const std::string name(k.str());
+      if (name == "shape" || name == "blocks") continue;
+      if (std::find(needed.begin(), needed.end(), name) == needed.end())
+        diag.error(node.source(), path + "." + name,
+                   "does not apply to shape \"" + deck.geometry.blocks[i].shape +
+                       "\" (its keys: " + join(needed) + ")");
+    }
+  }
+}
+
+void check_boundaries(const toml::table& root, Deck& deck, Diagnostics& diag) {
+  const auto* array = root.get_as<toml::array>("boundary");
+  std::set<std::string> seen;
+  for (std::size_t i = 0; i < deck.boundaries.size(); ++i) {
+    const auto& b = deck.boundaries[i];
+    const auto* table = array ? (*array)[i].as_table() : nullptr;
+    const toml::source_region where = table ? table->source() : toml::source_region{};
+    const std::string path = "boundary[" + std::to_string(i) + "]";
+    if (!seen.insert(b.name).second)
+      diag.error(where, path + ".name", "duplicate boundary name \"" + b.name + "\"");
+    if (b.face.size() == 2) {
+      const int direction = b.face[0] - 'x';
+      if (deck.grid.is_periodic(direction))
+        diag.error(where, path + ".face",
+                   "face " + b.face + " is periodic (grid.periodic); it has no boundary cells");
+    }
+  }
+}
+
+void check_run(const toml::table& root, Deck& deck, Diagnostics& diag) {
+  const auto& r = deck.run;
+  if (!(r.dt_min <= r.dt_initial && r.dt_initial <= r.dt_max)) {
+    const auto* run = root.get_as<toml::table>("run");
+    diag.error(run ? run->source() : root.source(), "run",
+               "expected dt_min <= dt_initial <= dt_max, got " + to_toml_text(r.dt_min) +
+                   ", " + to_toml_text(r.dt_initial) + ", " + to_toml_text(r.dt_max));
+  }
+}
+
+void read_material_and_models(const toml::table& root, Deck& deck, Diagnostics& diag) {
+  const toml::table* solids = subtable(root, "solids", "solids", diag);
+  read_section(solids, solids_section(), "solids", deck.solids.material, diag);
+  read_section(solids, solids_switch_section(), "solids", deck.solids, diag, {}, false);
+  const toml::table* models_table = subtable(root, "models", "models", diag);
+  if (models_table) check_unknown_keys(*models_table, "models", {"solids_stress"}, diag);
+  const toml::table* stress =
+      models_table ? subtable(*models_table, "solids_stress", "models.solids_stress", diag) : nullptr;
+  read_model_choice(stress, "models.solids_stress", solids_stress_section(),
+                    models::stress_registry(), deck.models.solids_stress, diag);
+}
+
+void read_all(const toml::table& root, Deck& deck, Diagnostics& diag) {
+  check_unknown_keys(root, "", top_level_sections, diag);
+  const toml::table* run = subtable(root, "run", "run", diag);
+  read_section(run, run_section(), "run", deck.run, diag, root.source());
+  read_section(subtable(root, "physics", "physics", diag), physics_section(), "physics",
+               deck.physics, diag);
+  read_grid(root, deck, diag);
+  const toml::table* geometry = subtable(root, "geometry", "geometry", diag);
+  read_section(geometry, geometry_section(), "geometry", deck.geometry, diag);
+  if (geometry)
+    deck.geometry.blocks =
+        read_array_of_tables(*geometry, "block", "geometry.block", block_section(), diag);
+  check_blocks(root, deck, diag);
+  deck.boundaries = read_array_of_tables(root, "boundary", "boundary", boundary_section(), diag);
+  check_boundaries(root, deck, diag);
+  read_section(subtable(root, "gas", "gas", diag), gas_section(), "gas", deck.gas, diag);
+  read_material_and_models(root, deck, diag);
+  deck.initial = read_array_of_tables(root, "initial", "initial", initial_section(), diag);
+  read_section(subtable(root, "output", "output", diag), output_section(), "output", deck.output,
+               diag, root.source());
+  check_run(root, deck, diag);
+}
+
+std::optional<toml::table> parse(const std::string& text, const std::string& source_name,
+                                 Diagnostics& diag) {
+  try {
+    return toml::parse(text, source_name);
+  } catch (const toml::parse_error& e) {
+    diag.error(e.source(), "", "TOML syntax error: " + std::string(e.description()));
+    return std::nullopt;
+  }
+}
+
+enum class Scope { whole_deck, material_and_models };
+
+Deck load(const std::string& text, const std::string& source_name,
+          const std::vector<std::string>& overrides, Scope scope) {
+  Diagnostics diag;
+  auto root = parse(text, source_name, diag);
+  if (!root) throw DeckError(diag);
+  for (const auto& o : overrides) apply_override(*root, o, diag);
+  Deck deck;
+  deck.source = source_name;
+  if (scope == Scope::whole_deck) {
+    read_all(*root, deck, diag);
+  } else {
+    read_material_and_models(*root, deck, diag);
+  }
+  if (!diag.ok()) throw DeckError(diag);
+  return deck;
+}
+
+std::string read_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    Diagnostics diag;
+    diag.error(no_source(path), "", "cannot open the deck file for reading");
+    throw DeckError(diag);
+  }
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::string show_coefficients(const models::Coefficients& c) {
+  std::string out;
+  for (const auto& [name, value] : c)
+    out += name + " = " +
+           (std::holds_alternative<double>(value) ? to_toml_text(std::get<double>(value))
+                                                  : to_toml_text(std::get<std::string>(value))) +
+           "\n";
+  return out;
+}
+
+}  // namespace
+
+Deck load_deck(const std::string& path, const std::vector<std::string>& overrides) {
+  return load(read_file(path), path, overrides, Scope::whole_deck);
+}
+
+Deck load_deck_text(const std::string& text, const std::string& source_name,
+                    const std::vector<std::string>& overrides) {
+  return load(text, source_name, overrides, Scope::whole_deck);
+}
+
+Deck load_material_and_models(const std::string& path_or_empty,
+                              const std::vector<std::string>& overrides) {
+  const std::string text = path_or_empty.empty() ? std::string() : read_file(path_or_empty);
+  return load(text, path_or_empty.empty() ? "--set" : path_or_empty, overrides,
+              Scope::material_and_models);
+}
+
+std::string resolved_text(const Deck& d) {
+  std::ostringstream s;
+  s << "# Resolved configuration of " << d.source << " (defaults filled, overrides applied)\n";
+  s << "\n[run]\n" << show_section(run_section(), d.run);
+  s << "\n[physics]\n" << show_section(physics_section(), d.physics);
+  s << "\n[grid]\n" << show_section(grid_section(), d.grid);
+  const Axis* axes[] = {&d.grid.x, &d.grid.y, &d.grid.z};
+  for (int a = 0; a < 3; ++a)
+    s << "\n[grid." << "xyz"[a] << "]\n" << show_section(axis_section(), *axes[a]);
+  s << "\n[geometry]\n" << show_section(geometry_section(), d.geometry);
+  for (const auto& b : d.geometry.blocks) {
+    s << "\n[[geometry.block]]\nshape = " << to_toml_text(b.shape)
+      << "\nblocks = " << to_toml_text(b.blocks) << "\n";
+    for (const auto& k : block_section().keys)
+      for (const auto& name : block_shape_keys(b.shape))
+        if (k.info.name == name) s << name << " = " << k.show(b) << "  # [" << k.info.unit << "]\n";
+  }
+  for (const auto& b : d.boundaries) s << "\n[[boundary]]\n" << show_section(boundary_section(), b);
+  s << "\n[gas]\n" << show_section(gas_section(), d.gas);
+  s << "\n[solids]\n"
+    << show_section(solids_switch_section(), d.solids)
+    << show_section(solids_section(), d.solids.material);
+  s << "\n[models.solids_stress]\n" << show_section(solids_stress_section(), d.models.solids_stress);
+  s << "\n[models.solids_stress." << d.models.solids_stress.name << "]\n"
+    << show_coefficients(d.models.solids_stress.coefficients);
+  for (const auto& r : d.initial) s << "\n[[initial]]\n" << show_section(initial_section(), r);
+  s << "\n[output]\n" << show_section(output_section(), d.output);
+  return s.str();
+}
+
+namespace {
+std::string escape_cell(std::string text) {
+  std::string out;
+  for (char c : text) out += (c == '|') ? std::string("\\|") : std::string(1, c);
+  return out;
+}
+
+void reference_table(std::ostringstream& s, const std::string& heading,
+                     const std::vector<KeyInfo>& keys) {
+  s << "\n## " << heading << "\n\n";
+  s << "| key | type | unit | default | allowed | description |\n";
+  s << "| --- | --- | --- | --- | --- | --- |\n";
+  for (const auto& k : keys)
+    s << "| `" << k.name << "` | " << k.type << " | " << (k.unit.empty() ? "" : k.unit) << " | "
+      << (k.required ? std::string("**required**") : escape_cell(k.default_text)) << " | "
+      << escape_cell(k.range) << " | " << escape_cell(k.doc) << " |\n";
+}
+
+template <class T>
+void reference_section(std::ostringstream& s, const Section<T>& section, const std::string& head) {
+  reference_table(s, head + " — " + section.title, section.infos());
+}
+}  // namespace
+
+std::string key_reference_markdown() {
+  std::ostringstream s;
+  s << "# Deck key reference\n\n"
+       "Generated by `bagnold keys` from the declarations in `src/deck/sections.cpp` and the\n"
+       "models' coefficient declarations; a test fails when this file and the code disagree.\n"
+       "Units are SI. Any key can be overridden with `--set section.key=value`\n"
+       "(array elements: `--set boundary[1].pressure=1e5`).\n";
+  reference_section(s, run_section(), "`[run]`");
+  reference_section(s, physics_section(), "`[physics]`");
+  reference_section(s, grid_section(), "`[grid]`");
+  reference_section(s, axis_section(), "`[grid.x]`, `[grid.y]`, `[grid.z]`");
+  reference_section(s, geometry_section(), "`[geometry]`");
+  reference_section(s, block_section(), "`[[geometry.block]]`");
+  s << "\nKeys per shape: box: min, max; half_space: point, normal; cylinder: base, axis, length,"
+       " radius; cone: base, axis, length, radius, top_radius.\n";
+  reference_section(s, boundary_section(), "`[[boundary]]`");
+  reference_section(s, gas_section(), "`[gas]`");
+  auto solids = solids_switch_section().infos();
+  for (const auto& k : solids_section().infos()) solids.push_back(k);
+  reference_table(s, "`[solids]` — Granular phase", solids);
+  reference_section(s, solids_stress_section(), "`[models.solids_stress]`");
+  for (const auto& entry : models::stress_registry().entries()) {
+    std::vector<KeyInfo> keys;
+    for (const auto& c : entry.coefficients) {
+      KeyInfo k;
+      k.name = c.name;
+      k.unit = c.unit;
+      k.doc = c.doc;
+      if (std::holds_alternative<double>(c.default_value)) {
+        k.type = "a real number";
+        k.default_text = to_toml_text(std::get<double>(c.default_value));
+        k.range = "in [" + to_toml_text(c.min) + ", " + to_toml_text(c.max) + "]";
+      } else {
+        k.type = "a string";
+        k.default_text = to_toml_text(std::get<std::string>(c.default_value));
+        k.range = "one of: " + join(c.choices);
+      }
+      keys.push_back(k);
+    }
+    reference_table(s, "`[models.solids_stress." + entry.name + "]` — " + entry.summary, keys);
+  }
+  reference_section(s, initial_section(), "`[[initial]]`");
+  reference_section(s, output_section(), "`[output]`");
+  return s.str();
+}
+
+}  // namespace bagnold::deck

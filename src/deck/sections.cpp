@@ -1,0 +1,197 @@
+#include "src/deck/sections.hpp"
+
+namespace bagnold::deck {
+
+namespace {
+const std::vector<std::string> boundary_types = {"no_slip_wall",     "free_slip_wall",
+                                                 "moving_wall",      "pressure_outflow",
+                                                 "pressure_inflow",  "mass_inflow"};
+const std::vector<std::string> wall_types = {"no_slip_wall", "free_slip_wall"};
+}  // namespace
+
+bool Grid::is_periodic(int direction) const {
+  static const char* names[] = {"x", "y", "z"};
+  for (const auto& p : periodic)
+    if (p == names[direction]) return true;
+  return false;
+}
+
+const Section<RunControl>& run_section() {
+  static const Section<RunControl> s{"run", "Run control", {
+      key(&RunControl::title, "title").init("").doc("Free text shown in logs and snapshots."),
+      key(&RunControl::end_time, "end_time").unit("s").required().at_least(0.0)
+          .doc("Simulated time at which the run stops."),
+      key(&RunControl::dt_initial, "dt_initial").unit("s").init(1e-4).above(0.0)
+          .doc("First time step; later steps adapt between dt_min and dt_max."),
+      key(&RunControl::dt_min, "dt_min").unit("s").init(1e-7).above(0.0)
+          .doc("Smallest time step; a step that fails at dt_min stops the run."),
+      key(&RunControl::dt_max, "dt_max").unit("s").init(1e-2).above(0.0)
+          .doc("Largest time step."),
+  }};
+  return s;
+}
+
+const Section<Physics>& physics_section() {
+  static const Section<Physics> s{"physics", "Body forces", {
+      key(&Physics::gravity, "gravity").unit("m/s^2").init({0.0, 0.0, -9.81})
+          .doc("Gravitational acceleration vector (tilt it for an inclined chute)."),
+  }};
+  return s;
+}
+
+const Section<Grid>& grid_section() {
+  static const Section<Grid> s{"grid", "Cartesian grid", {
+      key(&Grid::periodic, "periodic").init(std::vector<std::string>{}).one_of({"x", "y", "z"})
+          .doc("Directions whose opposite faces are a periodic pair."),
+  }, {"x", "y", "z"}};
+  return s;
+}
+
+const Section<Axis>& axis_section() {
+  static const Section<Axis> s{"grid.x", "One grid direction ([grid.x], [grid.y], [grid.z])", {
+      key(&Axis::min, "min").unit("m").init(0.0).doc("Lower end of the domain."),
+      key(&Axis::max, "max").unit("m").required().doc("Upper end of the domain (> min)."),
+      key(&Axis::cells, "cells").required().within(1, 1 << 20).doc("Number of cells."),
+      key(&Axis::ratio, "ratio").unit("-").init(1.0).within(0.01, 100.0)
+          .doc("Width of the last cell over the first: 1 is uniform, otherwise geometric."),
+  }};
+  return s;
+}
+
+const Section<Geometry>& geometry_section() {
+  static const Section<Geometry> s{"geometry", "Geometry", {
+      key(&Geometry::default_wall, "default_wall").init("no_slip_wall").one_of(wall_types)
+          .doc("Wall type of every boundary cell no [[boundary]] region claims."),
+  }, {"block"}};
+  return s;
+}
+
+const Section<Block>& block_section() {
+  static const Section<Block> s{"geometry.block", "Blocking primitives ([[geometry.block]])", {
+      key(&Block::shape, "shape").required().one_of({"box", "half_space", "cylinder", "cone"})
+          .doc("Primitive; a cell is blocked when its centre is inside (or outside) it."),
+      key(&Block::blocks, "blocks").init("inside").one_of({"inside", "outside"})
+          .doc("Which side of the primitive is solid wall."),
+      key(&Block::min, "min").unit("m").doc("box: lower corner."),
+      key(&Block::max, "max").unit("m").doc("box: upper corner."),
+      key(&Block::point, "point").unit("m").doc("half_space: a point on the plane."),
+      key(&Block::normal, "normal").unit("-")
+          .doc("half_space: normal pointing into the blocked side (need not be unit length)."),
+      key(&Block::base, "base").unit("m").doc("cylinder, cone: centre of the base disc."),
+      key(&Block::axis, "axis").unit("-").doc("cylinder, cone: axis direction from the base."),
+      key(&Block::length, "length").unit("m").above(0.0).doc("cylinder, cone: length along axis."),
+      key(&Block::radius, "radius").unit("m").above(0.0).doc("cylinder, cone: radius at the base."),
+      key(&Block::top_radius, "top_radius").unit("m").at_least(0.0)
+          .doc("cone: radius at base + length along the axis."),
+  }};
+  return s;
+}
+
+std::vector<std::string> block_shape_keys(const std::string& shape) {
+  if (shape == "box") return {"min", "max"};
+  if (shape == "half_space") return {"point", "normal"};
+  if (shape == "cylinder") return {"base", "axis", "length", "radius"};
+  if (shape == "cone") return {"base", "axis", "length", "radius", "top_radius"};
+  return {};
+}
+
+const Section<BoundaryRegion>& boundary_section() {
+  static const Section<BoundaryRegion> s{"boundary", "Boundary regions ([[boundary]])", {
+      key(&BoundaryRegion::name, "name").required()
+          .doc("Name used in the monitor columns (mass flux through the region)."),
+      key(&BoundaryRegion::type, "type").required().one_of(boundary_types)
+          .doc("Condition on the faces between the region's cells and the fluid."),
+      key(&BoundaryRegion::face, "face").init("any")
+          .one_of({"x-", "x+", "y-", "y+", "z-", "z+", "internal", "any"})
+          .doc("Domain face the region lies on, or internal (blocked cells inside the domain)."),
+      key(&BoundaryRegion::min, "min").unit("m").init({-1e30, -1e30, -1e30})
+          .doc("Lower corner of the box that selects boundary cells (by their centres)."),
+      key(&BoundaryRegion::max, "max").unit("m").init({1e30, 1e30, 1e30})
+          .doc("Upper corner of the selecting box."),
+      key(&BoundaryRegion::pressure, "pressure").unit("Pa").init(101325.0).above(0.0)
+          .doc("pressure_inflow / pressure_outflow: gas pressure outside."),
+      key(&BoundaryRegion::wall_velocity, "wall_velocity").unit("m/s").init({0.0, 0.0, 0.0})
+          .doc("moving_wall: velocity of the wall (its tangential part is used)."),
+      key(&BoundaryRegion::gas_velocity, "gas_velocity").unit("m/s").init({0.0, 0.0, 0.0})
+          .doc("mass_inflow: gas velocity."),
+      key(&BoundaryRegion::solids_velocity, "solids_velocity").unit("m/s").init({0.0, 0.0, 0.0})
+          .doc("mass_inflow: solids velocity."),
+      key(&BoundaryRegion::solids_fraction, "solids_fraction").unit("-").init(0.0).within(0.0, 1.0)
+          .doc("mass_inflow: solids volume fraction ε_s."),
+  }};
+  return s;
+}
+
+const Section<Gas>& gas_section() {
+  static const Section<Gas> s{"gas", "Gas phase", {
+      key(&Gas::enabled, "enabled").init(true)
+          .doc("false: granular flow in vacuum, no gas equations are solved."),
+      key(&Gas::density, "density").unit("kg/m^3").init(1.2).above(0.0).doc("ρ_g."),
+      key(&Gas::viscosity, "viscosity").unit("Pa s").init(1.8e-5).above(0.0).doc("μ_g."),
+      key(&Gas::reference_pressure, "reference_pressure").unit("Pa").init(101325.0).above(0.0)
+          .doc("Initial gas pressure at the top of the domain."),
+  }};
+  return s;
+}
+
+const Section<models::Material>& solids_section() {
+  using models::Material;
+  static const Section<Material> s{"solids", "Granular phase", {
+      key(&Material::diameter, "diameter").unit("m").init(1e-3).above(0.0).doc("d_p."),
+      key(&Material::density, "density").unit("kg/m^3").init(2500.0).above(0.0).doc("ρ_s."),
+      key(&Material::restitution, "restitution").unit("-").init(0.8).within(0.0, 1.0)
+          .doc("e, normal coefficient of restitution."),
+      key(&Material::friction, "friction").unit("-").init(0.3).within(0.0, 1.0)
+          .doc("μ, interparticle friction coefficient (the report's tables cover [0, 1])."),
+      key(&Material::stiffness, "stiffness").unit("N/m").init(1e5).above(0.0)
+          .doc("k, normal contact stiffness (rheology models: quasi-static pressure)."),
+      key(&Material::bond_number, "bond_number").unit("-").init(0.0).at_least(0.0)
+          .doc("Bo*, modified Bond number (steady-shear-cohesive)."),
+  }, {"enabled"}};
+  return s;
+}
+
+const Section<Solids>& solids_switch_section() {
+  static const Section<Solids> s{"solids", "Granular phase", {
+      key(&Solids::enabled, "enabled").init(true).doc("false: a single-phase (gas) run."),
+  }};
+  return s;
+}
+
+const Section<ModelChoice>& solids_stress_section() {
+  static const Section<ModelChoice> s{"models.solids_stress", "Solids-stress closure", {
+      key(&ModelChoice::name, "model").init("mkt")
+          .doc("Closure name; its constants go in [models.solids_stress.<model>]."),
+  }};
+  return s;
+}
+
+const Section<InitialRegion>& initial_section() {
+  static const Section<InitialRegion> s{"initial", "Initial state ([[initial]], later wins)", {
+      key(&InitialRegion::min, "min").unit("m").init({-1e30, -1e30, -1e30})
+          .doc("Lower corner of the box (cell centres inside are set)."),
+      key(&InitialRegion::max, "max").unit("m").init({1e30, 1e30, 1e30})
+          .doc("Upper corner of the box."),
+      key(&InitialRegion::solids_fraction, "solids_fraction").unit("-").init(0.0)
+          .within(0.0, 1.0).doc("ε_s."),
+      key(&InitialRegion::gas_velocity, "gas_velocity").unit("m/s").init({0.0, 0.0, 0.0})
+          .doc("Gas velocity."),
+      key(&InitialRegion::solids_velocity, "solids_velocity").unit("m/s").init({0.0, 0.0, 0.0})
+          .doc("Solids velocity."),
+  }};
+  return s;
+}
+
+const Section<Output>& output_section() {
+  static const Section<Output> s{"output", "Output", {
+      key(&Output::directory, "directory").required()
+          .doc("Where snapshots, the XDMF index and the monitor go (created if missing)."),
+      key(&Output::snapshot_interval, "snapshot_interval").unit("s").init(0.1).above(0.0)
+          .doc("Simulated time between HDF5 snapshots."),
+      key(&Output::progress, "progress").init("auto").one_of({"auto", "always", "never"})
+          .doc("Progress line on stderr: auto shows it only when stderr is a terminal."),
+  }};
+  return s;
+}
+
+}  // namespace bagnold::deck

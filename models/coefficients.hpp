@@ -1,0 +1,32 @@
+#pragma once
+// A model's own constants, declared once with their unit, default, range and doc. The deck
+// layer turns these declarations into the keys of [models.<family>.<model>] (so the models stay
+// free of TOML), and hands the resolved values back as a Coefficients map.
+
+#include <limits>
+#include <map>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace bagnold::models {
+
+struct CoefficientSpec {
+  std::string name;                      // deck key, snake_case
+  std::string unit;                      // "-" for dimensionless
+  std::variant<double, std::string> default_value;
+  double min = -std::numeric_limits<double>::infinity();  // inclusive, for real values
+  double max = std::numeric_limits<double>::infinity();
+  std::vector<std::string> choices;      // allowed values, for string options
+  std::string doc;
+};
+
+using CoefficientValue = std::variant<double, std::string>;
+using Coefficients = std::map<std::string, CoefficientValue>;
+
+// Defaults of every declared coefficient, overridden by the given values.
+Coefficients resolve(const std::vector<CoefficientSpec>& specs, const Coefficients& given);
+double real_coefficient(const Coefficients& c, const std::string& name);
+const std::string& string_coefficient(const Coefficients& c, const std::string& name);
+
+}  // namespace bagnold::models

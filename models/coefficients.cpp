@@ -1,8 +1,39 @@
 #include "models/coefficients.hpp"
 
 #include <stdexcept>
+#include <utility>
 
 namespace bagnold::models {
+
+CoefficientSpec real_spec(std::string name, std::string unit, double default_value, double min,
+                          double max, std::string doc) {
+  CoefficientSpec s;
+  s.name = std::move(name);
+  s.unit = std::move(unit);
+  s.default_value = default_value;
+  s.min = min;
+  s.max = max;
+  s.doc = std::move(doc);
+  return s;
+}
+
+CoefficientSpec choice_spec(std::string name, std::string default_value,
+                            std::vector<std::string> choices, std::string doc) {
+  CoefficientSpec s;
+  s.name = std::move(name);
+  s.unit = std::string(1, '-');
+  s.default_value = std::move(default_value);
+  s.choices = std::move(choices);
+  s.doc = std::move(doc);
+  return s;
+}
+
+std::vector<CoefficientSpec> concatenate(
+    std::initializer_list<std::vector<CoefficientSpec>> parts) {
+  std::vector<CoefficientSpec> out;
+  for (const auto& part : parts) out.insert(out.end(), part.begin(), part.end());
+  return out;
+}
 
 Coefficients resolve(const std::vector<CoefficientSpec>& specs, const Coefficients& given) {
   Coefficients out;

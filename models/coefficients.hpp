@@ -3,6 +3,7 @@
 // layer turns these declarations into the keys of [models.<family>.<model>] (so the models stay
 // free of TOML), and hands the resolved values back as a Coefficients map.
 
+#include <initializer_list>
 #include <limits>
 #include <map>
 #include <string>
@@ -20,6 +21,16 @@ struct CoefficientSpec {
   std::vector<std::string> choices;      // allowed values, for string options
   std::string doc;
 };
+
+// Builders for the two kinds of declaration (designated initializers of CoefficientSpec would
+// trip -Wmissing-field-initializers for the members a kind does not use).
+CoefficientSpec real_spec(std::string name, std::string unit, double default_value, double min,
+                          double max, std::string doc);
+CoefficientSpec choice_spec(std::string name, std::string default_value,
+                            std::vector<std::string> choices, std::string doc);
+
+// The declarations of several parts (a model's own, then shared groups), in order.
+std::vector<CoefficientSpec> concatenate(std::initializer_list<std::vector<CoefficientSpec>> parts);
 
 using CoefficientValue = std::variant<double, std::string>;
 using Coefficients = std::map<std::string, CoefficientValue>;

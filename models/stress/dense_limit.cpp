@@ -1,0 +1,66 @@
+#include "models/stress/dense_limit.hpp"
+
+#include <cmath>
+
+#include "models/dual.hpp"
+#include "models/stress/friction_table.hpp"
+
+namespace bagnold::models {
+
+template <class Real>
+Real smoothed_power(Real excess, double exponent, double smoothing) {
+  using std::pow;
+  if (!(value_of(excess) > 0.0)) return Real(0.0);
+  if (smoothing == 0.0) return pow(excess, exponent);
+  return excess * excess * pow(excess * excess + smoothing * smoothing, 0.5 * exponent - 1.0);
+}
+
+std::vector<CoefficientSpec> DenseLimit::specs() {
+  return {
+      real_spec("jamming_margin", "-", 0.01, 1e-9, 0.1,
+       "δ [-]: g0 (and the dense temperature branch) are evaluated at "
+              "min(φ, φ_c(μ) − δ); the quasi-static pressure starts at φ_c − δ."),
+      real_spec("quasi_static_scale", "-", 1.0, 0.0, 1e3,
+       "s [-]: multiplies α_QS(μ) (App. A Table II) in the quasi-static pressure "
+              "s α_QS (k/d) (φ − φ_c + δ)^{2/3} (App. A Eq. 8 form); 0 switches it off."),
+      real_spec("onset_smoothing", "-", 1e-4, 0.0, 0.01,
+       "x_s [-]: volume-fraction width over which the 2/3 power of the quasi-static "
+              "pressure is smoothed so that dP_s/dε_s is finite at onset."),
+      real_spec("dilute_cutoff", "-", 1e-6, 0.0, 0.01,
+       "φ_min [-]: below this solids fraction the kinetic stresses and T are zero "
+              "(homogeneous-shear kinetic theory diverges as 1/φ there)."),
+  };
+}
+
+DenseLimit DenseLimit::read(const Coefficients& c) {
+  return {.jamming_margin = real_coefficient(c, "jamming_margin"),
+          .quasi_static_scale = real_coefficient(c, "quasi_static_scale"),
+          .onset_smoothing = real_coefficient(c, "onset_smoothing"),
+          .dilute_cutoff = real_coefficient(c, "dilute_cutoff")};
+}
+
+template <class Real>
+Real DenseLimit::capped(Real phi, double critical_fraction) const {
+  const double cap = jamming_fraction(critical_fraction);
+  return value_of(phi) < cap ? phi : Real(cap);
+}
+
+template <class Real>
+Real DenseLimit::quasi_static_pressure(Real phi, double critical_fraction,
+                                       double stiffness_over_diameter, double friction) const {
+  if (quasi_static_scale == 0.0) return Real(0.0);
+  // App. A Eq. 8 with the onset moved from φ_c to φ_c − δ, where the kinetic part stops stiffening.
+  const double coefficient =
+      quasi_static_scale * chialvo2012::quasi_static_coefficient(friction) * stiffness_over_diameter;
+  return coefficient *
+         smoothed_power(phi - jamming_fraction(critical_fraction), 2.0 / 3.0, onset_smoothing);
+}
+
+template double smoothed_power(double, double, double);
+template Dual smoothed_power(Dual, double, double);
+template double DenseLimit::capped(double, double) const;
+template Dual DenseLimit::capped(Dual, double) const;
+template double DenseLimit::quasi_static_pressure(double, double, double, double) const;
+template Dual DenseLimit::quasi_static_pressure(Dual, double, double, double) const;
+
+}  // namespace bagnold::models

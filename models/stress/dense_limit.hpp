@@ -1,0 +1,51 @@
+#pragma once
+// What the kinetic models (SKT, MKT) do where kinetic theory stops: at and above the jamming
+// point φ_c(μ), and at vanishing solids fraction. docs/models.md, "At and above φ_c".
+//
+//  1. Jamming cap. g0 (and MKT's dense temperature branch) are evaluated at
+//     φ_j = min(φ, φ_c − δ), δ = jamming_margin, so they stay finite; the explicit φ factors of
+//     H, J, K are not capped, so the kinetic pressure keeps growing mildly with φ.
+//  2. Quasi-static pressure. From φ_j on, a rate-independent pressure of the form of
+//     App. A Eq. 8 takes over the job of resisting compaction:
+//        P_qs = s · α_QS(μ) · (k/d) · g(φ − φ_j),   g(x) = x² (x² + x_s²)^{1/3 − 1} for x > 0
+//     g(x) → x^{2/3} for x ≫ x_s (Eq. 8's exponent) and g has a finite slope at onset, so
+//     dP_s/dε_s stays finite. It carries the yield shear stress τ_qs = η_s(μ) P_qs
+//     (Mohr–Coulomb with App. A's yield stress ratio), whose viscosity is regularized.
+//  3. Dilute cutoff. Homogeneous-shear kinetic theory gives T ~ (γ̇d)²/φ² and p ~ 1/φ as φ → 0;
+//     below φ_min (dilute_cutoff) the stresses and T are set to zero (no material, no stress;
+//     the solver skips such cells anyway).
+
+#include <vector>
+
+#include "models/coefficients.hpp"
+
+namespace bagnold::models {
+
+// x² (x² + x_s²)^{n/2 − 1} for x > 0, else 0: x^n away from onset with a finite slope at x = 0.
+// x_s = 0 gives x^n exactly. Templated for Dual.
+template <class Real>
+Real smoothed_power(Real excess, double exponent, double smoothing);
+
+struct DenseLimit {
+  double jamming_margin = 0.01;     // δ [-]
+  double quasi_static_scale = 1.0;  // s [-]
+  double onset_smoothing = 1e-4;    // x_s [-]
+  double dilute_cutoff = 1e-6;      // φ_min [-]
+
+  static std::vector<CoefficientSpec> specs();
+  static DenseLimit read(const Coefficients& c);
+
+  // φ_j = φ_c − δ: where g0 stops growing and the quasi-static pressure starts.
+  double jamming_fraction(double critical_fraction) const {
+    return critical_fraction - jamming_margin;
+  }
+  // min(φ, φ_j), with zero slope past the cap.
+  template <class Real>
+  Real capped(Real phi, double critical_fraction) const;
+  // P_qs [Pa] for stiffness/diameter k/d [Pa] and friction coefficient μ.
+  template <class Real>
+  Real quasi_static_pressure(Real phi, double critical_fraction, double stiffness_over_diameter,
+                             double friction) const;
+};
+
+}  // namespace bagnold::models

@@ -1,0 +1,26 @@
+#pragma once
+// Regularization of the viscosity of rate-independent (frictional, quasi-static, cohesive)
+// stresses: μ = τ/γ̇ diverges as γ̇ → 0 (DESIGN.md, "Dense regime"). Two deck keys, declared
+// once here and shared by every stress model:
+//   min_strain_rate  γ̇_min [1/s]:  μ = τ / sqrt(γ̇² + γ̇_min²)   (smooth, exact for γ̇ ≫ γ̇_min)
+//   max_viscosity    μ_max [Pa s]: μ ≤ μ_max                    (a hard cap on the total)
+
+#include <vector>
+
+#include "models/coefficients.hpp"
+
+namespace bagnold::models {
+
+struct ViscosityLimits {
+  double min_strain_rate = 1e-3;  // γ̇_min [1/s]
+  double max_viscosity = 1e5;     // μ_max [Pa s]
+
+  static std::vector<CoefficientSpec> specs(double default_max_viscosity = 1e5);
+  static ViscosityLimits read(const Coefficients& c);
+
+  // Viscosity of a stress τ that does not vanish with the shear rate.
+  double rate_independent_viscosity(double stress, double shear_rate) const;
+  double capped(double viscosity) const { return viscosity < max_viscosity ? viscosity : max_viscosity; }
+};
+
+}  // namespace bagnold::models

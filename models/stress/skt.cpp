@@ -1,0 +1,85 @@
+// Standard kinetic theory (Garzó–Dufty), report App. B Eqs. 1–18. See skt.hpp.
+#include "models/stress/skt.hpp"
+
+#include <cmath>
+#include <memory>
+
+#include "models/stress/friction_table.hpp"
+#include "models/stress/garzo_dufty.hpp"
+#include "models/stress/pointwise.hpp"
+
+namespace bagnold::models::skt {
+
+template <class Real>
+KineticState<Real> kinetic_state(Real phi, const Material& material, rdf::Kind radial,
+                                 const DenseLimit& dense) {
+  const double critical = chialvo2012::critical_fraction(material.friction);
+  const double e = material.restitution;
+  KineticState<Real> s;
+  s.radial_distribution = rdf::evaluate(radial, dense.capped(phi, critical), critical);
+  const Real& g0 = s.radial_distribution;
+  s.pressure_factor = garzo_dufty::pressure_factor(phi, g0, e);
+  s.shear_factor = garzo_dufty::shear_factor(phi, g0, e);
+  s.dissipation_factor = garzo_dufty::dissipation_factor(phi, g0, e);
+  s.bulk_factor = garzo_dufty::bulk_factor(phi, g0, e);
+  // Eq. 15: production γ̇τ (Eq. 14) = dissipation Γ (Eq. 3) gives T = (J/K)(γ̇d)².
+  s.temperature_factor = s.shear_factor / s.dissipation_factor;
+  return s;
+}
+
+template KineticState<double> kinetic_state(double, const Material&, rdf::Kind, const DenseLimit&);
+template KineticState<Dual> kinetic_state(Dual, const Material&, rdf::Kind, const DenseLimit&);
+
+Skt::Skt(rdf::Kind radial, const DenseLimit& dense, const ViscosityLimits& limits)
+    : m_radial(radial), m_dense(dense), m_limits(limits) {}
+
+void Skt::evaluate(const Material& material, const SolidsState& in, SolidsStress& out) const {
+  require_valid_material(material, name());
+  const double rho = material.density;
+  const double d = material.diameter;
+  const double critical = chialvo2012::critical_fraction(material.friction);
+  const double yield_ratio = chialvo2012::yield_stress_ratio(material.friction);
+  evaluate_cells(in, out, [&](double phi, double shear_rate, double /*divergence*/) {
+    PointStress p;
+    if (phi < m_dense.dilute_cutoff) {
+      p.granular_temperature = 0.0;
+      return p;
+    }
+    const auto s = kinetic_state(Dual::variable(phi), material, m_radial, m_dense);
+    const double rate_d2 = shear_rate * shear_rate * d * d;
+    // Eq. 1 with T = (J/K)(γ̇d)²: p = ρ_s H (J/K)(γ̇d)², differentiated at fixed γ̇.
+    const Dual kinetic_pressure = rho * s.pressure_factor * s.temperature_factor * rate_d2;
+    const Dual quasi_static_pressure = m_dense.quasi_static_pressure(
+        Dual::variable(phi), critical, material.stiffness / d, material.friction);
+    const double temperature = s.temperature_factor.value * rate_d2;
+    const double sqrt_temperature = std::sqrt(temperature);
+    p.pressure = kinetic_pressure.value + quasi_static_pressure.value;
+    p.pressure_derivative = kinetic_pressure.slope + quasi_static_pressure.slope;
+    p.granular_temperature = temperature;
+    // Eq. 2: τ = ρ_s d J √T γ̇, so μ_s = ρ_s d J √T; the quasi-static yield stress η_s P_qs is
+    // rate independent and gets the regularized viscosity.
+    const double kinetic_viscosity = rho * d * s.shear_factor.value * sqrt_temperature;
+    p.shear_viscosity = m_limits.capped(
+        kinetic_viscosity +
+        m_limits.rate_independent_viscosity(yield_ratio * quasi_static_pressure.value, shear_rate));
+    p.bulk_viscosity = rho * d * s.bulk_factor.value * sqrt_temperature;
+    return p;
+  });
+}
+
+namespace {
+[[maybe_unused]] const bool registered = stress_registry().add({
+    .name = "skt",
+    .summary = "Standard kinetic theory: Garzó–Dufty, algebraic temperature (App. B Eqs. 1–18)",
+    .coefficients = concatenate(
+        {{choice_spec("radial_distribution", "carnahan-starling", rdf::kind_names(),
+                      "g0: carnahan-starling (App. B Eq. 11), torquato (Eq. 12, product form, "
+                      "φ_c(μ)) or mkt (Eq. 31, φ_c(μ)), to share MKT's jamming point.")},
+         DenseLimit::specs(), ViscosityLimits::specs()}),
+    .make = [](const Coefficients& c) -> std::unique_ptr<SolidsStressModel> {
+      return std::make_unique<Skt>(rdf::kind_from_name(string_coefficient(c, "radial_distribution")),
+                                   DenseLimit::read(c), ViscosityLimits::read(c));
+    }});
+}  // namespace
+
+}  // namespace bagnold::models::skt

@@ -1,0 +1,50 @@
+#pragma once
+// Standard kinetic theory: Garzó–Dufty with an algebraic granular energy balance,
+// report App. B Sec. II, Eqs. 1–18. No friction corrections; the interparticle friction only
+// enters through φ_c(μ) of the Torquato and MKT radial distribution functions (so SKT and MKT
+// can share a jamming point, as the report's bin comparison did) and the dense limit.
+//
+// Valid: frictionless, moderately inelastic spheres, 0 < φ ≲ φ_f = 0.49 (App. B Fig. 1).
+// Outside: at and above φ_c(μ) − δ the dense limit of dense_limit.hpp applies; below the dilute
+// cutoff the stresses are zero.
+
+#include <string>
+
+#include "models/dual.hpp"
+#include "models/rdf/radial_distribution.hpp"
+#include "models/stress/dense_limit.hpp"
+#include "models/stress/regularization.hpp"
+#include "models/stress/solids_stress.hpp"
+
+namespace bagnold::models::skt {
+
+// Steady-shear kinetic quantities at one point (Real = double, or Dual for d/dφ).
+template <class Real>
+struct KineticState {
+  Real radial_distribution;   // g0 at the capped fraction
+  Real pressure_factor;       // H, Eq. 4
+  Real shear_factor;          // J, Eq. 5
+  Real dissipation_factor;    // K, Eq. 6
+  Real bulk_factor;           // J_b (garzo_dufty.hpp)
+  Real temperature_factor;    // T/(γ̇ d)² = J/K, Eq. 15
+};
+
+template <class Real>
+KineticState<Real> kinetic_state(Real phi, const Material& material, rdf::Kind radial,
+                                 const DenseLimit& dense);
+
+class Skt final : public SolidsStressModel {
+ public:
+  Skt(rdf::Kind radial, const DenseLimit& dense, const ViscosityLimits& limits);
+  std::string name() const override { return "skt"; }
+  void evaluate(const Material& material, const SolidsState& in,
+                SolidsStress& out) const override;
+  bool defines_temperature() const override { return true; }
+
+ private:
+  rdf::Kind m_radial;
+  DenseLimit m_dense;
+  ViscosityLimits m_limits;
+};
+
+}  // namespace bagnold::models::skt

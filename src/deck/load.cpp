@@ -152,7 +152,7 @@ void read_coefficients(const toml::table& table, const std::string& path,
 template <class Base>
 void read_model_choice(const toml::table* table, const std::string& path,
                        const Section<ModelChoice>& section, const models::Registry<Base>& registry,
-                       ModelChoice& out, Diagnostics& diag) {
+                       bool required, ModelChoice& out, Diagnostics& diag) {
   const auto names = registry.names();
   Section<ModelChoice> with_models = section;
   with_models.also_known = names;
@@ -168,6 +168,7 @@ void read_model_choice(const toml::table* table, const std::string& path,
     }
   }
   const auto it = std::find(names.begin(), names.end(), out.name);
+  if (it == names.end() && !required && !(table && table->get("model"))) return;
   if (it == names.end()) {
     const toml::node* node = table ? table->get("model") : nullptr;
     std::string message = "unknown model \"" + out.name + "\"";
@@ -295,8 +296,9 @@ void read_material_and_models(const toml::table& root, Deck& deck, Diagnostics& 
   if (models_table) check_unknown_keys(*models_table, "models", {"solids_stress"}, diag);
   const toml::table* stress =
       models_table ? subtable(*models_table, "solids_stress", "models.solids_stress", diag) : nullptr;
+  // Without solids the closure is not used: its name is checked only when given.
   read_model_choice(stress, "models.solids_stress", solids_stress_section(),
-                    models::stress_registry(), deck.models.solids_stress, diag);
+                    models::stress_registry(), deck.solids.enabled, deck.models.solids_stress, diag);
 }
 
 void read_all(const toml::table& root, Deck& deck, Diagnostics& diag) {

@@ -1,0 +1,48 @@
+#include "src/grid/shapes.hpp"
+
+#include <cmath>
+
+namespace bagnold::grid {
+
+namespace {
+double dot(const Point& a, const Point& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+}  // namespace
+
+bool inside_box(const Point& x, const Point& min, const Point& max) {
+  for (int d = 0; d < 3; ++d)
+    if (x[d] < min[d] || x[d] > max[d]) return false;
+  return true;
+}
+
+bool inside_half_space(const Point& x, const Point& point, const Point& normal) {
+  return dot({x[0] - point[0], x[1] - point[1], x[2] - point[2]}, normal) > 0.0;
+}
+
+bool inside_frustum(const Point& x, const Point& base, const Point& axis, double length,
+                    double radius, double top_radius) {
+  const double norm = std::sqrt(dot(axis, axis));
+  if (norm == 0.0) return false;
+  const Point a{axis[0] / norm, axis[1] / norm, axis[2] / norm};
+  const Point r{x[0] - base[0], x[1] - base[1], x[2] - base[2]};
+  const double t = dot(r, a);
+  if (t < 0.0 || t > length) return false;
+  const Point radial{r[0] - t * a[0], r[1] - t * a[1], r[2] - t * a[2]};
+  const double local_radius = radius + (top_radius - radius) * t / length;
+  return dot(radial, radial) <= local_radius * local_radius;
+}
+
+bool blocks_point(const deck::Block& b, const Point& x) {
+  bool inside = false;
+  if (b.shape == "box") {
+    inside = inside_box(x, b.min, b.max);
+  } else if (b.shape == "half_space") {
+    inside = inside_half_space(x, b.point, b.normal);
+  } else if (b.shape == "cylinder") {
+    inside = inside_frustum(x, b.base, b.axis, b.length, b.radius, b.radius);
+  } else if (b.shape == "cone") {
+    inside = inside_frustum(x, b.base, b.axis, b.length, b.radius, b.top_radius);
+  }
+  return b.blocks == "inside" ? inside : !inside;
+}
+
+}  // namespace bagnold::grid

@@ -1,0 +1,331 @@
+#include "src/io/snapshot.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "src/io/hdf5_handle.hpp"
+
+namespace bagnold::io {
+
+namespace {
+
+constexpr int format_version = 1;
+constexpr const char* bagnold_version = "0.1.0";
+
+File open_parallel(const std::string& path, MPI_Comm comm, bool create) {
+  // Errors are reported by exceptions with a message; HDF5's own stack dump would only add noise.
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  PropertyList access(check(H5Pcreate(H5P_FILE_ACCESS), "H5Pcreate(file access)"));
+  check_status(H5Pset_fapl_mpio(access.get(), comm, MPI_INFO_NULL), "H5Pset_fapl_mpio");
+  if (create)
+    return File(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.get()));
+  return File(H5Fopen(path.c_str(), H5F_ACC_RDONLY, access.get()));
+}
+
+void write_attribute(hid_t object, const char* name, double value) {
+  Dataspace space(check(H5Screate(H5S_SCALAR), "H5Screate"));
+  Attribute a(check(H5Acreate2(object, name, H5T_NATIVE_DOUBLE, space.get(), H5P_DEFAULT,
+                               H5P_DEFAULT), "H5Acreate"));
+  check_status(H5Awrite(a.get(), H5T_NATIVE_DOUBLE, &value), "H5Awrite");
+}
+
+void write_attribute(hid_t object, const char* name, long value) {
+  Dataspace space(check(H5Screate(H5S_SCALAR), "H5Screate"));
+  Attribute a(check(H5Acreate2(object, name, H5T_NATIVE_LONG, space.get(), H5P_DEFAULT,
+                               H5P_DEFAULT), "H5Acreate"));
+  check_status(H5Awrite(a.get(), H5T_NATIVE_LONG, &value), "H5Awrite");
+}
+
+void write_attribute(hid_t object, const char* name, const std::string& value) {
+  Datatype type(check(H5Tcopy(H5T_C_S1), "H5Tcopy"));
+  check_status(H5Tset_size(type.get(), std::max<std::size_t>(1, value.size())), "H5Tset_size");
+  Dataspace space(check(H5Screate(H5S_SCALAR), "H5Screate"));
+  Attribute a(check(H5Acreate2(object, name, type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
+                    "H5Acreate"));
+  check_status(H5Awrite(a.get(), type.get(), value.empty() ? " " : value.c_str()), "H5Awrite");
+}
+
+double read_double_attribute(hid_t object, const char* name) {
+  Attribute a(check(H5Aopen(object, name, H5P_DEFAULT), name));
+  double value = 0;
+  check_status(H5Aread(a.get(), H5T_NATIVE_DOUBLE, &value), "H5Aread");
+  return value;
+}
+
+long read_long_attribute(hid_t object, const char* name) {
+  Attribute a(check(H5Aopen(object, name, H5P_DEFAULT), name));
+  long value = 0;
+  check_status(H5Aread(a.get(), H5T_NATIVE_LONG, &value), "H5Aread");
+  return value;
+}
+
+// A dataset of the given shape; `fill` is what unwritten elements read as.
+Dataset create_dataset(hid_t parent, const std::string& name, hid_t type,
+                       const std::vector<hsize_t>& dims, const void* fill) {
+  Dataspace space(check(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr),
+                        "H5Screate_simple"));
+  PropertyList create(check(H5Pcreate(H5P_DATASET_CREATE), "H5Pcreate(dataset)"));
+  if (fill) {
+    check_status(H5Pset_fill_value(create.get(), type, fill), "H5Pset_fill_value");
+    // Parallel HDF5 requires the fill to be written at allocation time.
+    check_status(H5Pset_alloc_time(create.get(), H5D_ALLOC_TIME_EARLY), "H5Pset_alloc_time");
+    check_status(H5Pset_fill_time(create.get(), H5D_FILL_TIME_ALLOC), "H5Pset_fill_time");
+  }
+  return Dataset(check(H5Dcreate2(parent, name.c_str(), type, space.get(), H5P_DEFAULT,
+                                  create.get(), H5P_DEFAULT), ("H5Dcreate " + name).c_str()));
+}
+
+// Writes (or reads) values at scattered points; collective transfer, ranks with no points
+// select none.
+void transfer_points(hid_t dataset, hid_t type, const std::vector<hsize_t>& coordinates, int rank,
+                     void* buffer, bool write) {
+  Dataspace file_space(check(H5Dget_space(dataset), "H5Dget_space"));
+  const hsize_t count = coordinates.size() / static_cast<std::size_t>(rank);
+  if (count > 0) {
+    check_status(H5Sselect_elements(file_space.get(), H5S_SELECT_SET, count, coordinates.data()),
+                 "H5Sselect_elements");
+  } else {
+    check_status(H5Sselect_none(file_space.get()), "H5Sselect_none");
+  }
+  const hsize_t memory_count = std::max<hsize_t>(count, 1);
+  Dataspace memory_space(check(H5Screate_simple(1, &memory_count, nullptr), "H5Screate_simple"));
+  if (count == 0) check_status(H5Sselect_none(memory_space.get()), "H5Sselect_none");
+  PropertyList transfer(check(H5Pcreate(H5P_DATASET_XFER), "H5Pcreate(xfer)"));
+  check_status(H5Pset_dxpl_mpio(transfer.get(), H5FD_MPIO_COLLECTIVE), "H5Pset_dxpl_mpio");
+  double dummy = 0;
+  void* data = count > 0 ? buffer : &dummy;
+  if (write) {
+    check_status(H5Dwrite(dataset, type, memory_space.get(), file_space.get(), transfer.get(), data),
+                 "H5Dwrite");
+  } else {
+    check_status(H5Dread(dataset, type, memory_space.get(), file_space.get(), transfer.get(), data),
+                 "H5Dread");
+  }
+}
+
+// Which owned cells go where: fluid cells to (k, j, i) of the 3-D arrays, boundary cells to
+// their ordinal among all boundary cells in natural order.
+struct Placement {
+  std::vector<int> fluid_locals;
+  std::vector<hsize_t> fluid_coordinates;  // 3 per point
+  std::vector<int> boundary_locals;
+  std::vector<hsize_t> boundary_coordinates;  // 1 per point
+  std::vector<std::int64_t> boundary_naturals;  // all boundary cells, natural order
+};
+
+std::vector<std::int64_t> all_boundary_naturals(const grid::CellFlags& flags) {
+  std::vector<std::int64_t> out;
+  out.reserve(static_cast<std::size_t>(flags.boundary_count));
+  for (std::size_t c = 0; c < flags.kind.size(); ++c)
+    if (flags.kind[c] == grid::CellKind::boundary) out.push_back(static_cast<std::int64_t>(c));
+  return out;
+}
+
+void add_fluid_point(Placement& p, const grid::Index3& ijk, int local) {
+  p.fluid_locals.push_back(local);
+  p.fluid_coordinates.push_back(static_cast<hsize_t>(ijk[2]));
+  p.fluid_coordinates.push_back(static_cast<hsize_t>(ijk[1]));
+  p.fluid_coordinates.push_back(static_cast<hsize_t>(ijk[0]));
+}
+
+void add_boundary_point(Placement& p, std::int64_t natural, int local) {
+  const auto it = std::lower_bound(p.boundary_naturals.begin(), p.boundary_naturals.end(), natural);
+  p.boundary_locals.push_back(local);
+  p.boundary_coordinates.push_back(static_cast<hsize_t>(it - p.boundary_naturals.begin()));
+}
+
+// Owned cells (for writing) or every local cell (for reading).
+Placement place_cells(const parallel::Layout& layout, const grid::CellFlags& flags, bool all_local) {
+  Placement p;
+  p.boundary_naturals = all_boundary_naturals(flags);
+  const int end = all_local ? layout.local_count() : layout.owned_count();
+  for (int l = 0; l < end; ++l) {
+    if (layout.kind(l) == grid::CellKind::fluid) {
+      add_fluid_point(p, layout.index3(l), l);
+    } else {
+      add_boundary_point(p, layout.natural(l), l);
+    }
+  }
+  return p;
+}
+
+std::vector<hsize_t> domain_dims(const grid::StructuredGrid& g) {
+  return {static_cast<hsize_t>(g.cells(2)), static_cast<hsize_t>(g.cells(1)),
+          static_cast<hsize_t>(g.cells(0))};
+}
+
+void write_grid(hid_t file, const parallel::Layout& layout, const grid::CellFlags& flags) {
+  const auto& g = layout.grid();
+  Group group(check(H5Gcreate2(file, "grid", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), "H5Gcreate grid"));
+  const bool root = layout.comm().is_root();
+  const char* names[] = {"x_faces", "y_faces", "z_faces"};
+  for (int d = 0; d < 3; ++d) {
+    const auto& faces = g.axis(d).faces();
+    Dataset ds = create_dataset(group.get(), names[d], H5T_NATIVE_DOUBLE, {faces.size()}, nullptr);
+    // Small datasets: rank 0 writes them whole (independent transfer).
+    if (root)
+      check_status(H5Dwrite(ds.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, faces.data()),
+                   "H5Dwrite faces");
+  }
+  const std::uint8_t blocked = 0;
+  Dataset ds = create_dataset(group.get(), "cell_flags", H5T_NATIVE_UINT8, domain_dims(g), &blocked);
+  if (root) {
+    std::vector<std::uint8_t> domain;
+    domain.reserve(static_cast<std::size_t>(g.domain_cell_count()));
+    for (int k = 0; k < g.cells(2); ++k)
+      for (int j = 0; j < g.cells(1); ++j)
+        for (int i = 0; i < g.cells(0); ++i)
+          domain.push_back(static_cast<std::uint8_t>(
+              flags.kind[static_cast<std::size_t>(g.natural({i, j, k}))]));
+    check_status(H5Dwrite(ds.get(), H5T_NATIVE_UINT8, H5S_ALL, H5S_ALL, H5P_DEFAULT, domain.data()),
+                 "H5Dwrite cell_flags");
+  }
+}
+
+}  // namespace
+
+const char* centering_name(Centering c) {
+  switch (c) {
+    case Centering::cell: return "cell";
+    case Centering::x_face: return "x_face";
+    case Centering::y_face: return "y_face";
+    case Centering::z_face: return "z_face";
+  }
+  return "cell";
+}
+
+void write_snapshot(const std::string& path, const parallel::Layout& layout,
+                    const grid::CellFlags& flags, const std::vector<FieldView>& fields,
+                    const SnapshotInfo& info) {
+  const std::string temporary = path + ".tmp";
+  const auto& comm = layout.comm();
+  const Placement placement = place_cells(layout, flags, false);
+  {
+    File file = open_parallel(temporary, comm.get(), true);
+    if (file.get() < 0) throw Hdf5Error("cannot create snapshot file " + temporary);
+    write_attribute(file.get(), "time", info.time);
+    write_attribute(file.get(), "step", info.step);
+    write_attribute(file.get(), "dt", info.dt);
+    write_attribute(file.get(), "format_version", static_cast<long>(format_version));
+    write_attribute(file.get(), "bagnold_version", std::string(bagnold_version));
+    write_attribute(file.get(), "title", info.title);
+    write_grid(file.get(), layout, flags);
+
+    Group field_group(check(H5Gcreate2(file.get(), "fields", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+                            "H5Gcreate fields"));
+    Group boundary_group(check(H5Gcreate2(file.get(), "boundary", H5P_DEFAULT, H5P_DEFAULT,
+                                          H5P_DEFAULT), "H5Gcreate boundary"));
+    const hsize_t boundary_total = placement.boundary_naturals.size();
+    {
+      Dataset ds = create_dataset(boundary_group.get(), "natural", H5T_NATIVE_INT64,
+                                  {std::max<hsize_t>(boundary_total, 1)}, nullptr);
+      if (comm.is_root() && boundary_total > 0)
+        check_status(H5Dwrite(ds.get(), H5T_NATIVE_INT64, H5S_ALL, H5S_ALL, H5P_DEFAULT,
+                              placement.boundary_naturals.data()), "H5Dwrite natural");
+    }
+    const double fill = std::numeric_limits<double>::quiet_NaN();
+    std::vector<double> buffer;
+    for (const auto& field : fields) {
+      Dataset ds = create_dataset(field_group.get(), field.name, H5T_NATIVE_DOUBLE,
+                                  domain_dims(layout.grid()), &fill);
+      write_attribute(ds.get(), "centering", std::string(centering_name(field.centering)));
+      buffer.clear();
+      for (const int l : placement.fluid_locals) buffer.push_back(field.values[static_cast<std::size_t>(l)]);
+      transfer_points(ds.get(), H5T_NATIVE_DOUBLE, placement.fluid_coordinates, 3, buffer.data(), true);
+
+      Dataset bs = create_dataset(boundary_group.get(), field.name, H5T_NATIVE_DOUBLE,
+                                  {std::max<hsize_t>(boundary_total, 1)}, &fill);
+      buffer.clear();
+      for (const int l : placement.boundary_locals) buffer.push_back(field.values[static_cast<std::size_t>(l)]);
+      transfer_points(bs.get(), H5T_NATIVE_DOUBLE, placement.boundary_coordinates, 1, buffer.data(), true);
+    }
+    check_status(H5Fflush(file.get(), H5F_SCOPE_GLOBAL), "H5Fflush");
+  }
+  comm.barrier();
+  if (comm.is_root() && std::rename(temporary.c_str(), path.c_str()) != 0)
+    throw Hdf5Error("cannot rename " + temporary + " to " + path);
+  comm.barrier();
+}
+
+SnapshotContents read_snapshot(const std::string& path, const parallel::Layout& layout,
+                               const std::vector<std::string>& names,
+                               std::vector<std::vector<double>>& fields) {
+  const auto& g = layout.grid();
+  File file = open_parallel(path, layout.comm().get(), false);
+  if (file.get() < 0) throw Hdf5Error("cannot open snapshot " + path);
+  SnapshotContents contents;
+  contents.info.time = read_double_attribute(file.get(), "time");
+  contents.info.dt = read_double_attribute(file.get(), "dt");
+  contents.info.step = read_long_attribute(file.get(), "step");
+
+  // The grid must be the one this run uses, face by face.
+  const char* face_names[] = {"grid/x_faces", "grid/y_faces", "grid/z_faces"};
+  for (int d = 0; d < 3; ++d) {
+    Dataset ds(check(H5Dopen2(file.get(), face_names[d], H5P_DEFAULT), face_names[d]));
+    Dataspace space(check(H5Dget_space(ds.get()), "H5Dget_space"));
+    const auto n = static_cast<std::size_t>(H5Sget_simple_extent_npoints(space.get()));
+    const auto& faces = g.axis(d).faces();
+    std::vector<double> stored(n);
+    if (n == faces.size())
+      check_status(H5Dread(ds.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, stored.data()),
+                   "H5Dread faces");
+    bool same = n == faces.size();
+    for (std::size_t i = 0; same && i < n; ++i)
+      same = std::abs(stored[i] - faces[i]) <= 1e-12 * (1.0 + std::abs(faces[i]));
+    if (!same)
+      throw Hdf5Error("snapshot " + path + " was written on another grid (" +
+                      std::string("xyz").substr(static_cast<std::size_t>(d), 1) + ": " +
+                      std::to_string(static_cast<long>(n) - 1) + " cells in the file, " +
+                      std::to_string(g.cells(d)) + " in this deck, or different coordinates)");
+  }
+
+  // Boundary ordinals come from the file's list, not from this run's flags.
+  Placement placement;
+  {
+    Dataset ds(check(H5Dopen2(file.get(), "boundary/natural", H5P_DEFAULT), "boundary/natural"));
+    Dataspace space(check(H5Dget_space(ds.get()), "H5Dget_space"));
+    std::vector<std::int64_t> naturals(static_cast<std::size_t>(H5Sget_simple_extent_npoints(space.get())));
+    check_status(H5Dread(ds.get(), H5T_NATIVE_INT64, H5S_ALL, H5S_ALL, H5P_DEFAULT, naturals.data()),
+                 "H5Dread natural");
+    placement.boundary_naturals = std::move(naturals);
+  }
+  for (int l = 0; l < layout.local_count(); ++l) {
+    if (layout.kind(l) == grid::CellKind::fluid) {
+      add_fluid_point(placement, layout.index3(l), l);
+    } else {
+      const auto it = std::lower_bound(placement.boundary_naturals.begin(),
+                                       placement.boundary_naturals.end(), layout.natural(l));
+      if (it == placement.boundary_naturals.end() || *it != layout.natural(l))
+        throw Hdf5Error("snapshot " + path + " has different geometry: a boundary cell of this "
+                        "deck is not a boundary cell in the file");
+      add_boundary_point(placement, layout.natural(l), l);
+    }
+  }
+
+  fields.assign(names.size(), std::vector<double>(static_cast<std::size_t>(layout.local_count())));
+  std::vector<double> buffer;
+  for (std::size_t f = 0; f < names.size(); ++f) {
+    const std::string field_path = "fields/" + names[f];
+    if (H5Lexists(file.get(), "fields", H5P_DEFAULT) <= 0 ||
+        H5Lexists(file.get(), field_path.c_str(), H5P_DEFAULT) <= 0)
+      throw Hdf5Error("snapshot " + path + " has no field '" + names[f] + "'");
+    Dataset ds(check(H5Dopen2(file.get(), field_path.c_str(), H5P_DEFAULT), field_path.c_str()));
+    buffer.assign(placement.fluid_locals.size(), 0.0);
+    transfer_points(ds.get(), H5T_NATIVE_DOUBLE, placement.fluid_coordinates, 3, buffer.data(), false);
+    for (std::size_t p = 0; p < buffer.size(); ++p)
+      fields[f][static_cast<std::size_t>(placement.fluid_locals[p])] = buffer[p];
+
+    const std::string boundary_path = "boundary/" + names[f];
+    Dataset bs(check(H5Dopen2(file.get(), boundary_path.c_str(), H5P_DEFAULT), boundary_path.c_str()));
+    buffer.assign(placement.boundary_locals.size(), 0.0);
+    transfer_points(bs.get(), H5T_NATIVE_DOUBLE, placement.boundary_coordinates, 1, buffer.data(), false);
+    for (std::size_t p = 0; p < buffer.size(); ++p)
+      fields[f][static_cast<std::size_t>(placement.boundary_locals[p])] = buffer[p];
+    contents.field_names.push_back(names[f]);
+  }
+  return contents;
+}
+
+}  // namespace bagnold::io

@@ -1,0 +1,58 @@
+#pragma once
+// HDF5 snapshots: one file per snapshot, written in parallel by all ranks.
+//
+// Layout of a snapshot file (docs/output.md):
+//   /                    attributes: time [s], step, dt [s], format_version, bagnold_version, title
+//   /grid/{x,y,z}_faces  face coordinates [m] (n + 1 each)
+//   /grid/cell_flags     uint8 (nz, ny, nx): 0 blocked, 1 fluid, 2 boundary (blocked, next to fluid)
+//   /fields/NAME         float64 (nz, ny, nx); value on fluid cells, NaN (the fill value) on
+//                        every other cell; attribute `centering`: cell | x_face | y_face | z_face
+//                        (a face field holds the east/north/top face of each cell)
+//   /boundary/natural    int64: natural indices of the boundary cells (extended box, x fastest)
+//   /boundary/NAME       float64: the field on those boundary cells (restart needs them)
+// The file is written as NAME.tmp and renamed when complete, so a crash never leaves a torn
+// snapshot under its final name.
+
+#include <span>
+#include <string>
+#include <vector>
+
+#include "src/grid/cell_flags.hpp"
+#include "src/parallel/layout.hpp"
+
+namespace bagnold::io {
+
+enum class Centering { cell, x_face, y_face, z_face };
+const char* centering_name(Centering c);
+
+struct FieldView {
+  std::string name;
+  Centering centering = Centering::cell;
+  std::span<const double> values;  // local_count() entries (owned and halo)
+};
+
+struct SnapshotInfo {
+  double time = 0.0;
+  long step = 0;
+  double dt = 0.0;
+  std::string title;
+};
+
+// Collective: every rank calls with the same field names in the same order.
+void write_snapshot(const std::string& path, const parallel::Layout& layout,
+                    const grid::CellFlags& flags, const std::vector<FieldView>& fields,
+                    const SnapshotInfo& info);
+
+struct SnapshotContents {
+  SnapshotInfo info;
+  std::vector<std::string> field_names;
+};
+
+// Collective: reads the named fields into `fields` (local_count() entries each, halo included)
+// for whatever layout the reader has, so a run restarts on any number of ranks. Throws when the
+// snapshot's grid differs from `layout`'s grid.
+SnapshotContents read_snapshot(const std::string& path, const parallel::Layout& layout,
+                               const std::vector<std::string>& names,
+                               std::vector<std::vector<double>>& fields);
+
+}  // namespace bagnold::io

@@ -1,0 +1,71 @@
+#include "src/parallel/communicator.hpp"
+
+namespace bagnold::parallel {
+
+MpiSession::MpiSession(int& argc, char**& argv) {
+  int initialized = 0;
+  MPI_Initialized(&initialized);
+  if (!initialized) MPI_Init(&argc, &argv);
+}
+
+MpiSession::~MpiSession() {
+  int finalized = 0;
+  MPI_Finalized(&finalized);
+  if (!finalized) MPI_Finalize();
+}
+
+Communicator::Communicator(MPI_Comm comm) : m_comm(comm) {
+  MPI_Comm_rank(comm, &m_rank);
+  MPI_Comm_size(comm, &m_size);
+}
+
+double Communicator::sum(double x) const {
+  double out = 0;
+  MPI_Allreduce(&x, &out, 1, MPI_DOUBLE, MPI_SUM, m_comm);
+  return out;
+}
+
+std::int64_t Communicator::sum(std::int64_t x) const {
+  std::int64_t out = 0;
+  MPI_Allreduce(&x, &out, 1, MPI_INT64_T, MPI_SUM, m_comm);
+  return out;
+}
+
+double Communicator::max(double x) const {
+  double out = 0;
+  MPI_Allreduce(&x, &out, 1, MPI_DOUBLE, MPI_MAX, m_comm);
+  return out;
+}
+
+std::int64_t Communicator::max(std::int64_t x) const {
+  std::int64_t out = 0;
+  MPI_Allreduce(&x, &out, 1, MPI_INT64_T, MPI_MAX, m_comm);
+  return out;
+}
+
+std::int64_t Communicator::min(std::int64_t x) const {
+  std::int64_t out = 0;
+  MPI_Allreduce(&x, &out, 1, MPI_INT64_T, MPI_MIN, m_comm);
+  return out;
+}
+
+void Communicator::sum_in_place(std::vector<double>& values) const {
+  MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_DOUBLE,
+                MPI_SUM, m_comm);
+}
+
+std::int64_t Communicator::exclusive_scan(std::int64_t x) const {
+  std::int64_t out = 0;
+  MPI_Exscan(&x, &out, 1, MPI_INT64_T, MPI_SUM, m_comm);
+  return m_rank == 0 ? 0 : out;
+}
+
+std::vector<std::int64_t> Communicator::all_gather(std::int64_t x) const {
+  std::vector<std::int64_t> out(static_cast<std::size_t>(m_size));
+  MPI_Allgather(&x, 1, MPI_INT64_T, out.data(), 1, MPI_INT64_T, m_comm);
+  return out;
+}
+
+void Communicator::barrier() const { MPI_Barrier(m_comm); }
+
+}  // namespace bagnold::parallel

@@ -1,0 +1,14 @@
+#include "src/parallel/domain.hpp"
+
+#include "src/parallel/partition.hpp"
+
+namespace bagnold::parallel {
+
+Domain::Domain(const deck::Deck& deck, const Communicator& comm)
+    : grid(deck.grid),
+      regions(grid::make_boundary_regions(deck)),
+      flags(grid::classify_cells(grid, deck.geometry, regions)),
+      owner(partition_cells(grid, flags, comm.size())),
+      layout(grid, flags, owner, comm) {}
+
+}  // namespace bagnold::parallel

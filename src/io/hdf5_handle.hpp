@@ -4,16 +4,11 @@
 
 #include <hdf5.h>
 
-#include <stdexcept>
+#include "src/io/io_error.hpp"
 #include <string>
 #include <utility>
 
 namespace bagnold::io {
-
-class Hdf5Error : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 inline hid_t check(hid_t id, const char* what) {
   if (id < 0) throw Hdf5Error(std::string("HDF5: ") + what + " failed");

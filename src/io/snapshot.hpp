@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "src/grid/cell_flags.hpp"
+#include "src/io/io_error.hpp"
 #include "src/parallel/layout.hpp"
 
 namespace bagnold::io {

@@ -1,0 +1,147 @@
+// Snapshots written from any number of ranks hold the same global arrays, and read back onto
+// any number of ranks. Run on 1, 2 and 3 ranks: each run compares the file with values computed
+// here, so the three runs produce bit-identical datasets or one of them fails.
+#include <gtest/gtest.h>
+#include <hdf5.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "src/deck/load.hpp"
+#include "src/io/snapshot.hpp"
+#include "src/parallel/domain.hpp"
+#include "tests/support/test_decks.hpp"
+
+namespace bagnold::tests {
+namespace {
+
+const std::string hopper = box_deck(
+    7, 5, 9,
+    "[[geometry.block]]\nshape = \"cone\"\nbase = [0.035, 0.025, 0.0]\naxis = [0.0, 0.0, 1.0]\n"
+    "length = 0.09\nradius = 0.01\ntop_radius = 0.05\nblocks = \"outside\"\n");
+
+double value_at(grid::Natural n) { return 1.0 + 0.001 * static_cast<double>(n); }
+
+std::string file_name(const std::string& stem) {
+  return stem + "_np" + std::to_string(parallel::Communicator().size()) + ".h5";
+}
+
+struct Written {
+  deck::Deck deck = deck::load_deck_text(hopper, "hopper.toml");
+  parallel::Domain domain{deck, parallel::Communicator()};
+  std::vector<double> values;
+
+  explicit Written(const std::string& path) {
+    const auto& layout = domain.layout;
+    values.resize(static_cast<std::size_t>(layout.local_count()));
+    for (int l = 0; l < layout.local_count(); ++l)
+      values[static_cast<std::size_t>(l)] = value_at(layout.natural(l));
+    io::write_snapshot(path, layout, domain.flags,
+                       {{"solids_fraction", io::Centering::cell, values},
+                        {"solids_velocity_x", io::Centering::x_face, values}},
+                       {0.25, 12, 1e-3, "test"});
+  }
+};
+
+TEST(Snapshot, GlobalArrayHoldsFluidValuesAndNaNElsewhere) {
+  const std::string path = file_name("snapshot_global");
+  Written w(path);
+  if (!parallel::Communicator().is_root()) return;
+  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  const hid_t ds = H5Dopen2(file, "fields/solids_fraction", H5P_DEFAULT);
+  ASSERT_GE(ds, 0);
+  const auto& g = w.domain.grid;
+  std::vector<double> data(static_cast<std::size_t>(g.domain_cell_count()));
+  ASSERT_GE(H5Dread(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()), 0);
+  std::size_t p = 0;
+  int fluid = 0;
+  for (int k = 0; k < g.cells(2); ++k)
+    for (int j = 0; j < g.cells(1); ++j)
+      for (int i = 0; i < g.cells(0); ++i, ++p) {
+        const auto n = g.natural({i, j, k});
+        if (w.domain.flags.kind[static_cast<std::size_t>(n)] == grid::CellKind::fluid) {
+          EXPECT_EQ(data[p], value_at(n));
+          ++fluid;
+        } else {
+          EXPECT_TRUE(std::isnan(data[p])) << "blocked cell (" << i << "," << j << "," << k << ")";
+        }
+      }
+  EXPECT_EQ(fluid, w.domain.flags.fluid_count);
+  EXPECT_GT(g.domain_cell_count(), fluid);  // the cone really blocks cells
+  H5Dclose(ds);
+  H5Fclose(file);
+}
+
+TEST(Snapshot, NoTemporaryFileIsLeftBehind) {
+  const std::string path = file_name("snapshot_tmp");
+  Written w(path);
+  EXPECT_TRUE(std::filesystem::exists(path));
+  EXPECT_FALSE(std::filesystem::exists(path + ".tmp"));
+}
+
+TEST(Snapshot, ReadBackGivesEveryLocalCellIncludingHaloAndBoundary) {
+  const std::string path = file_name("snapshot_roundtrip");
+  Written w(path);
+  std::vector<std::vector<double>> fields;
+  const auto contents =
+      io::read_snapshot(path, w.domain.layout, {"solids_fraction", "solids_velocity_x"}, fields);
+  EXPECT_EQ(contents.info.time, 0.25);
+  EXPECT_EQ(contents.info.step, 12);
+  ASSERT_EQ(fields.size(), 2u);
+  for (int l = 0; l < w.domain.layout.local_count(); ++l) {
+    EXPECT_EQ(fields[0][static_cast<std::size_t>(l)], w.values[static_cast<std::size_t>(l)]);
+    EXPECT_EQ(fields[1][static_cast<std::size_t>(l)], w.values[static_cast<std::size_t>(l)]);
+  }
+}
+
+TEST(Snapshot, ReadOntoAnotherRankCountFromASerialFile) {
+  // Written on one rank (rank 0 alone, with its own communicator), read on all ranks.
+  const std::string path = file_name("snapshot_serial_source");
+  const parallel::Communicator world;
+  if (world.is_root()) {
+    const auto d = deck::load_deck_text(hopper, "hopper.toml");
+    parallel::Domain serial(d, parallel::Communicator(MPI_COMM_SELF));
+    std::vector<double> v(static_cast<std::size_t>(serial.layout.local_count()));
+    for (int l = 0; l < serial.layout.local_count(); ++l)
+      v[static_cast<std::size_t>(l)] = value_at(serial.layout.natural(l));
+    io::write_snapshot(path, serial.layout, serial.flags, {{"p", io::Centering::cell, v}}, {});
+  }
+  world.barrier();
+  const auto d = deck::load_deck_text(hopper, "hopper.toml");
+  parallel::Domain domain(d, world);
+  std::vector<std::vector<double>> fields;
+  io::read_snapshot(path, domain.layout, {"p"}, fields);
+  for (int l = 0; l < domain.layout.local_count(); ++l)
+    EXPECT_EQ(fields[0][static_cast<std::size_t>(l)], value_at(domain.layout.natural(l)));
+}
+
+TEST(Snapshot, RefusesASnapshotFromAnotherGrid) {
+  const std::string path = file_name("snapshot_other_grid");
+  Written w(path);
+  const auto other = deck::load_deck_text(box_deck(7, 5, 10), "other.toml");
+  parallel::Domain domain(other, parallel::Communicator());
+  std::vector<std::vector<double>> fields;
+  try {
+    io::read_snapshot(path, domain.layout, {"solids_fraction"}, fields);
+    FAIL() << "expected an error";
+  } catch (const io::Hdf5Error& e) {
+    EXPECT_NE(std::string(e.what()).find("another grid"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Snapshot, MissingFieldIsReportedByName) {
+  const std::string path = file_name("snapshot_missing");
+  Written w(path);
+  std::vector<std::vector<double>> fields;
+  try {
+    io::read_snapshot(path, w.domain.layout, {"granular_temperature"}, fields);
+    FAIL() << "expected an error";
+  } catch (const io::Hdf5Error& e) {
+    EXPECT_NE(std::string(e.what()).find("granular_temperature"), std::string::npos);
+  }
+}
+
+}  // namespace
+}  // namespace bagnold::tests

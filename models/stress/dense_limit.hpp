@@ -26,6 +26,9 @@ namespace bagnold::models {
 template <class Real>
 Real smoothed_power(Real excess, double exponent, double smoothing);
 
+// The dilute_cutoff key φ_min (item 3 above), shared with mfix-default.
+CoefficientSpec dilute_cutoff_spec();
+
 struct DenseLimit {
   double jamming_margin = 0.01;     // δ [-]
   double quasi_static_scale = 1.0;  // s [-]

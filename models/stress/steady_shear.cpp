@@ -1,0 +1,87 @@
+// Steady-shear rheology, report App. A Eqs. 7–15. See steady_shear.hpp.
+#include "models/stress/steady_shear.hpp"
+
+#include <memory>
+
+#include "models/stress/friction_table.hpp"
+
+namespace bagnold::models::steady_shear {
+
+blended::Constants constants_at(double friction, const Constants& k) {
+  blended::Constants c;
+  c.critical_fraction = chialvo2012::critical_fraction(friction);  // A Table I
+  c.quasi_static_exponent = 2.0 / 3.0;                            // a = 2/3, A Eq. 8
+  c.inertial_exponent = 2.0;                                      // A Eq. 10
+  c.quasi_static = chialvo2012::quasi_static_coefficient(friction);  // A Table II
+  c.intermediate = k.intermediate;
+  c.yield_stress_ratio = chialvo2012::yield_stress_ratio(friction);  // A Table II
+  c.inertial = k.inertial;
+  c.transition_inertial_number = k.transition_inertial_number;
+  c.hard_rise = k.hard_rise;
+  c.hard_exponent = k.hard_exponent;
+  c.transition_shear_rate = k.transition_shear_rate;
+  c.soft_drop = k.soft_drop;
+  c.soft_exponent = k.soft_exponent;
+  c.onset_smoothing = k.onset_smoothing;
+  return c;  // no cohesion: α_coh = α₃ = 0
+}
+
+SteadyShear::SteadyShear(const Constants& constants, const ViscosityLimits& limits)
+    : m_constants(constants), m_limits(limits) {}
+
+void SteadyShear::evaluate(const Material& material, const SolidsState& in,
+                           SolidsStress& out) const {
+  require_valid_material(material, name());
+  Material non_cohesive = material;
+  non_cohesive.bond_number = 0.0;  // App. A has no cohesion; Bo* belongs to the cohesive model
+  const blended::Constants c = constants_at(material.friction, m_constants);
+  evaluate_cells(in, out, [&](double phi, double shear_rate, double /*divergence*/) {
+    return blended::point_stress(phi, shear_rate, non_cohesive, c, m_limits);
+  });
+}
+
+namespace {
+Constants read_constants(const Coefficients& c) {
+  return {.inertial = real_coefficient(c, "alpha_inert"),
+          .intermediate = real_coefficient(c, "alpha_int"),
+          .transition_inertial_number = real_coefficient(c, "i0"),
+          .hard_rise = real_coefficient(c, "alpha_1"),
+          .hard_exponent = real_coefficient(c, "beta_1"),
+          .transition_shear_rate = real_coefficient(c, "gamma_hat_0"),
+          .soft_drop = real_coefficient(c, "alpha_2"),
+          .soft_exponent = real_coefficient(c, "beta_2"),
+          .onset_smoothing = real_coefficient(c, "onset_smoothing")};
+}
+
+[[maybe_unused]] const bool registered = stress_registry().add({
+    .name = "steady-shear",
+    .summary = "Blended steady-shear rheology (Chialvo, Sun & Sundaresan 2012; App. A Eqs. 7–15)",
+    .coefficients = concatenate(
+        {{real_spec("alpha_inert", "-", 0.021, 0.0, 10.0,
+                    "α_inert [-]: inertial pressure p d/k = α_inert γ̂²/|φ − φ_c|², App. A Eq. 10, "
+                    "Table II."),
+          real_spec("alpha_int", "-", 0.099, 0.0, 10.0,
+                    "α_int [-]: intermediate pressure p d/k = α_int γ̂^{1/2}, App. A Eq. 9, "
+                    "Table II."),
+          real_spec("i0", "-", 0.32, 1e-6, 10.0,
+                    "I_0 [-]: transition inertial number of η_hard, App. A Eq. 11, Table II."),
+          real_spec("alpha_1", "-", 0.37, 0.0, 10.0,
+                    "α₁ [-]: rise of η_hard above η_s, App. A Eq. 11, Table II."),
+          real_spec("beta_1", "-", 1.5, 0.1, 10.0,
+                    "β₁ [-]: exponent of η_hard, App. A Eq. 11, Table II."),
+          real_spec("gamma_hat_0", "-", 0.1, 1e-9, 10.0,
+                    "γ̂_0 [-]: transition scaled shear rate of η_soft, App. A Eq. 12, Table II."),
+          real_spec("alpha_2", "-", 0.2, 0.0, 10.0,
+                    "α₂ [-]: softness drop of η, App. A Eq. 12, Table II."),
+          real_spec("beta_2", "-", 1.0, 0.1, 10.0,
+                    "β₂ [-]: exponent of η_soft, App. A Eq. 12, Table II."),
+          real_spec("onset_smoothing", "-", 1e-4, 0.0, 0.01,
+                    "x_s [-]: volume-fraction width over which |φ − φ_c|^{2/3} (App. A Eq. 8) is "
+                    "smoothed so that dP_s/dε_s is finite at φ_c.")},
+         ViscosityLimits::specs()}),
+    .make = [](const Coefficients& c) -> std::unique_ptr<SolidsStressModel> {
+      return std::make_unique<SteadyShear>(read_constants(c), ViscosityLimits::read(c));
+    }});
+}  // namespace
+
+}  // namespace bagnold::models::steady_shear

@@ -149,7 +149,7 @@ Constants read_constants(const Coefficients& c) {
                     "α₂ [-]: dense part of g0 = g0_CS + α₂φ²/(φ_c − φ)^{3/2}, App. B Eq. 31, "
                     "Table II."),
           choice_spec("psi_exponent", "report", {"report", "openfoam"},
-                      "Exponent of (1 − e²) in ψ, App. B Eq. 32: report = −2/3 as printed, "
+                      "n [-], exponent of (1 − e²) in ψ, App. B Eq. 32: report = −2/3 as printed, "
                       "openfoam = −3/2 as in the authors' OpenFOAM code.")},
          DenseLimit::specs(), ViscosityLimits::specs()}),
     .make = [](const Coefficients& c) -> std::unique_ptr<SolidsStressModel> {

@@ -73,7 +73,7 @@ namespace {
     .summary = "Standard kinetic theory: Garzó–Dufty, algebraic temperature (App. B Eqs. 1–18)",
     .coefficients = concatenate(
         {{choice_spec("radial_distribution", "carnahan-starling", rdf::kind_names(),
-                      "g0: carnahan-starling (App. B Eq. 11), torquato (Eq. 12, product form, "
+                      "g0 [-]: carnahan-starling (App. B Eq. 11), torquato (Eq. 12, product form, "
                       "φ_c(μ)) or mkt (Eq. 31, φ_c(μ)), to share MKT's jamming point.")},
          DenseLimit::specs(), ViscosityLimits::specs()}),
     .make = [](const Coefficients& c) -> std::unique_ptr<SolidsStressModel> {

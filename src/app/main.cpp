@@ -1,1 +1,44 @@
-int main() { return 0; }
+// bagnold: the command-line program. Subcommands: run, check, info, keys.
+#include <CLI/CLI.hpp>
+
+#include "src/app/commands.hpp"
+#include "src/app/exit_codes.hpp"
+#include "src/parallel/communicator.hpp"
+
+int main(int argc, char** argv) {
+  using namespace bagnold::app;
+  bagnold::parallel::MpiSession mpi(argc, argv);
+
+  CLI::App cli{"Bagnold: two-fluid (Euler-Euler) gas-solid flow solver for dense granular flows"};
+  cli.require_subcommand(1);
+  cli.set_version_flag("--version", "bagnold 0.1.0");
+
+  DeckArguments deck_args;
+  auto add_deck_options = [&](CLI::App* sub) {
+    sub->add_option("deck", deck_args.deck, "Deck file (TOML)")->required();
+    sub->add_option("--set", deck_args.overrides,
+                    "Override a deck key, e.g. --set solids.diameter=1e-3 (repeatable)")
+        ->allow_extra_args(false);
+  };
+  auto* run = cli.add_subcommand("run", "Run the simulation a deck describes");
+  add_deck_options(run);
+  auto* check = cli.add_subcommand(
+      "check", "Validate a deck without running; print the resolved configuration and geometry");
+  add_deck_options(check);
+  auto* info = cli.add_subcommand("info", "Version, build, MPI, PETSc, HDF5 and available models");
+  auto* keys = cli.add_subcommand("keys", "Print the deck key reference (Markdown, docs/deck.md)");
+
+  try {
+    cli.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    int rank = 0;
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    const int code = rank == 0 ? cli.exit(e) : (e.get_exit_code() == 0 ? 0 : 1);
+    return code == 0 ? success : bad_input;
+  }
+  if (run->parsed()) return run_command(deck_args);
+  if (check->parsed()) return check_command(deck_args);
+  if (info->parsed()) return info_command();
+  if (keys->parsed()) return keys_command();
+  return bad_input;
+}

@@ -18,7 +18,17 @@ void Diagnostics::error(const toml::source_region& where, std::string key, std::
   d.column = static_cast<int>(where.begin.column);
   d.key = std::move(key);
   d.message = std::move(message);
+  // toml++ does not keep source positions on nodes inserted by an override.
+  for (const auto& [override_key, origin] : m_overrides)
+    if (d.key == override_key || d.key.rfind(override_key + ".", 0) == 0) {
+      d.file = origin;
+      d.line = d.column = 0;
+    }
   m_errors.push_back(std::move(d));
+}
+
+void Diagnostics::note_override(const std::string& key, const std::string& origin) {
+  m_overrides.emplace_back(key, origin);
 }
 
 std::string Diagnostics::report() const {

@@ -6,6 +6,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace bagnold::deck {
@@ -23,12 +24,15 @@ struct Diagnostic {
 class Diagnostics {
  public:
   void error(const toml::source_region& where, std::string key, std::string message);
+  // Errors on this key (or below it) without a source position point at the override.
+  void note_override(const std::string& key, const std::string& origin);
   bool ok() const { return m_errors.empty(); }
   const std::vector<Diagnostic>& errors() const { return m_errors; }
   std::string report() const;  // one line per error
 
  private:
   std::vector<Diagnostic> m_errors;
+  std::vector<std::pair<std::string, std::string>> m_overrides;  // key, "--set key=value"
 };
 
 // Thrown by load_deck when a deck has errors; what() is the full report.

@@ -13,7 +13,7 @@ namespace bagnold::deck {
 namespace {
 
 const std::vector<std::string> top_level_sections = {
-    "run", "physics", "grid", "geometry", "boundary", "gas", "solids", "models", "initial",
+    "extends", "run", "physics", "grid", "geometry", "boundary", "gas", "solids", "models", "initial",
     "output"};
 
 toml::source_region no_source(const std::string& file) {
@@ -107,6 +107,7 @@ void apply_override(toml::table& root, const std::string& assignment, Diagnostic
     return;
   }
   table->insert_or_assign(parts.back().name, *parsed.get("value"));
+  diag.note_override(path, origin);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -334,12 +335,67 @@ std::optional<toml::table> parse(const std::string& text, const std::string& sou
   }
 }
 
+std::string read_file(const std::string& path);
+
+// Overlays `top` on `base`: tables merge key by key, anything else (values, arrays, arrays of
+// tables) replaces what the base had.
+void overlay(toml::table& base, const toml::table& top) {
+  for (const auto& [k, node] : top) {
+    auto* existing = base.get(k.str());
+    if (existing && existing->is_table() && node.is_table()) {
+      overlay(*existing->as_table(), *node.as_table());
+    } else {
+      base.insert_or_assign(k.str(), node);
+    }
+  }
+}
+
+// `extends = "base.toml"` (relative to the deck's folder): the deck is the base deck with this
+// file's keys laid over it, so grid rungs and model variants share one deck.
+std::optional<toml::table> resolve_extends(toml::table deck, const std::string& source_name,
+                                           Diagnostics& diag, int depth) {
+  const toml::node* extends = deck.get("extends");
+  if (!extends) return deck;
+  const auto base_name = extends->value<std::string>();
+  if (!base_name) {
+    diag.error(extends->source(), "extends", "expected a string: the path of a base deck");
+    return std::nullopt;
+  }
+  if (depth > 8) {
+    diag.error(extends->source(), "extends", "more than 8 levels of extends (a cycle?)");
+    return std::nullopt;
+  }
+  const auto slash = source_name.find_last_of('/');
+  const std::string folder = slash == std::string::npos ? "" : source_name.substr(0, slash + 1);
+  const std::string base_path = (*base_name)[0] == '/' ? *base_name : folder + *base_name;
+  std::string text;
+  try {
+    text = read_file(base_path);
+  } catch (const DeckError&) {
+    diag.error(extends->source(), "extends", "cannot open the base deck '" + base_path + "'");
+    return std::nullopt;
+  }
+  toml::table base;
+  try {
+    base = toml::parse(text, base_path);
+  } catch (const toml::parse_error& e) {
+    diag.error(e.source(), "", "TOML syntax error: " + std::string(e.description()));
+    return std::nullopt;
+  }
+  auto resolved_base = resolve_extends(std::move(base), base_path, diag, depth + 1);
+  if (!resolved_base) return std::nullopt;
+  deck.erase("extends");
+  overlay(*resolved_base, deck);
+  return resolved_base;
+}
+
 enum class Scope { whole_deck, material_and_models };
 
 Deck load(const std::string& text, const std::string& source_name,
           const std::vector<std::string>& overrides, Scope scope) {
   Diagnostics diag;
   auto root = parse(text, source_name, diag);
+  if (root) root = resolve_extends(std::move(*root), source_name, diag, 0);
   if (!root) throw DeckError(diag);
   for (const auto& o : overrides) apply_override(*root, o, diag);
   Deck deck;

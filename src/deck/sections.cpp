@@ -71,7 +71,7 @@ const Section<Block>& block_section() {
       key(&Block::shape, "shape").required().one_of({"box", "half_space", "cylinder", "cone"})
           .doc("Primitive; a cell is blocked when its centre is inside (or outside) it."),
       key(&Block::blocks, "blocks").init("inside").one_of({"inside", "outside"})
-          .doc("Which side of the primitive is solid wall."),
+          .doc("Which side is solid; for cylinder/cone, outside means around it between its ends."),
       key(&Block::min, "min").unit("m").doc("box: lower corner."),
       key(&Block::max, "max").unit("m").doc("box: upper corner."),
       key(&Block::point, "point").unit("m").doc("half_space: a point on the plane."),

@@ -18,31 +18,28 @@ bool inside_half_space(const Point& x, const Point& point, const Point& normal) 
   return dot({x[0] - point[0], x[1] - point[1], x[2] - point[2]}, normal) > 0.0;
 }
 
-bool inside_frustum(const Point& x, const Point& base, const Point& axis, double length,
-                    double radius, double top_radius) {
+FrustumSide frustum_side(const Point& x, const Point& base, const Point& axis, double length,
+                         double radius, double top_radius) {
   const double norm = std::sqrt(dot(axis, axis));
-  if (norm == 0.0) return false;
+  if (norm == 0.0) return FrustumSide::beyond_ends;
   const Point a{axis[0] / norm, axis[1] / norm, axis[2] / norm};
   const Point r{x[0] - base[0], x[1] - base[1], x[2] - base[2]};
   const double t = dot(r, a);
-  if (t < 0.0 || t > length) return false;
+  if (t < 0.0 || t > length) return FrustumSide::beyond_ends;
   const Point radial{r[0] - t * a[0], r[1] - t * a[1], r[2] - t * a[2]};
   const double local_radius = radius + (top_radius - radius) * t / length;
-  return dot(radial, radial) <= local_radius * local_radius;
+  return dot(radial, radial) <= local_radius * local_radius ? FrustumSide::inside
+                                                            : FrustumSide::outside;
 }
 
 bool blocks_point(const deck::Block& b, const Point& x) {
-  bool inside = false;
-  if (b.shape == "box") {
-    inside = inside_box(x, b.min, b.max);
-  } else if (b.shape == "half_space") {
-    inside = inside_half_space(x, b.point, b.normal);
-  } else if (b.shape == "cylinder") {
-    inside = inside_frustum(x, b.base, b.axis, b.length, b.radius, b.radius);
-  } else if (b.shape == "cone") {
-    inside = inside_frustum(x, b.base, b.axis, b.length, b.radius, b.top_radius);
-  }
-  return b.blocks == "inside" ? inside : !inside;
+  const bool block_inside = b.blocks == "inside";
+  if (b.shape == "box") return inside_box(x, b.min, b.max) == block_inside;
+  if (b.shape == "half_space") return inside_half_space(x, b.point, b.normal) == block_inside;
+  // Cylinder and cone: "outside" is the wall around the shape over its length (a hopper).
+  const double top = b.shape == "cone" ? b.top_radius : b.radius;
+  const auto side = frustum_side(x, b.base, b.axis, b.length, b.radius, top);
+  return block_inside ? side == FrustumSide::inside : side == FrustumSide::outside;
 }
 
 }  // namespace bagnold::grid

@@ -1,0 +1,30 @@
+#pragma once
+// The monitor time series (monitor.csv in the output directory): one row per time step with the
+// time, the step, iterations, residuals, the inventory of each phase and the mass flux through
+// each boundary region, appended and flushed as the run goes so a crash loses at most one row.
+// Written by rank 0 only. On restart, rows later than the restart time are dropped first.
+
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace bagnold::io {
+
+class Monitor {
+ public:
+  // Opens (or continues) the series. `columns` are the names after "time". When `resume_time`
+  // is given, an existing file with the same header is kept up to that time; otherwise a new
+  // file is started.
+  Monitor(std::string path, std::vector<std::string> columns, bool active,
+          const double* resume_time = nullptr);
+  void append(double time, const std::vector<double>& values);
+  const std::vector<std::string>& columns() const { return m_columns; }
+
+ private:
+  std::string m_path;
+  std::vector<std::string> m_columns;
+  bool m_active;
+  std::ofstream m_out;
+};
+
+}  // namespace bagnold::io

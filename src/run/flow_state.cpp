@@ -1,0 +1,45 @@
+#include "src/run/flow_state.hpp"
+
+namespace bagnold::run {
+
+namespace {
+const io::Centering face_of[3] = {io::Centering::x_face, io::Centering::y_face,
+                                  io::Centering::z_face};
+const char* const axis_suffix[3] = {"_x", "_y", "_z"};
+}  // namespace
+
+FlowState::FlowState(int local_count) {
+  for (auto* f : fields()) f->assign(static_cast<std::size_t>(local_count), 0.0);
+  gas_fraction.assign(static_cast<std::size_t>(local_count), 1.0);
+}
+
+std::vector<std::string> FlowState::field_names() {
+  std::vector<std::string> names = {"solids_fraction", "gas_fraction", "gas_pressure",
+                                    "solids_pressure", "granular_temperature"};
+  for (int d = 0; d < 3; ++d) names.push_back(std::string("gas_velocity") + axis_suffix[d]);
+  for (int d = 0; d < 3; ++d) names.push_back(std::string("solids_velocity") + axis_suffix[d]);
+  return names;
+}
+
+std::vector<std::vector<double>*> FlowState::fields() {
+  std::vector<std::vector<double>*> out = {&solids_fraction, &gas_fraction, &gas_pressure,
+                                           &solids_pressure, &granular_temperature};
+  for (auto& v : gas_velocity) out.push_back(&v);
+  for (auto& v : solids_velocity) out.push_back(&v);
+  return out;
+}
+
+std::vector<io::FieldView> FlowState::views() const {
+  const auto names = field_names();
+  auto& self = const_cast<FlowState&>(*this);  // fields() only hands out pointers
+  const auto all = self.fields();
+  std::vector<io::FieldView> out;
+  for (std::size_t f = 0; f < all.size(); ++f) {
+    io::Centering centering = io::Centering::cell;
+    if (f >= 5) centering = face_of[(f - 5) % 3];
+    out.push_back({names[f], centering, *all[f]});
+  }
+  return out;
+}
+
+}  // namespace bagnold::run

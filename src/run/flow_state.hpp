@@ -1,0 +1,33 @@
+#pragma once
+// The fields of a two-fluid run on one rank: every field has layout.local_count() entries
+// (owned cells, then halo), indexed by the owning cell. Velocities are staggered: component d
+// of a phase velocity lives on the face of the cell in the + direction d (east, north, top).
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "src/io/snapshot.hpp"
+#include "src/parallel/layout.hpp"
+
+namespace bagnold::run {
+
+struct FlowState {
+  explicit FlowState(int local_count);
+
+  std::vector<double> solids_fraction;          // ε_s [-]
+  std::vector<double> gas_fraction;             // ε_g = 1 − ε_s [-]
+  std::vector<double> gas_pressure;             // P_g [Pa]
+  std::vector<double> solids_pressure;          // P_s [Pa]
+  std::vector<double> granular_temperature;     // Θ [m²/s²]
+  std::array<std::vector<double>, 3> gas_velocity;     // U_g, V_g, W_g [m/s] on +x, +y, +z faces
+  std::array<std::vector<double>, 3> solids_velocity;  // U_s, V_s, W_s [m/s]
+
+  // Every field, named as in the snapshots (docs/output.md).
+  std::vector<io::FieldView> views() const;
+  // The same fields, writable, in the same order (for restart).
+  std::vector<std::vector<double>*> fields();
+  static std::vector<std::string> field_names();
+};
+
+}  // namespace bagnold::run

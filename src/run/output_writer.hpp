@@ -1,0 +1,35 @@
+#pragma once
+// Where a run's output goes: the output directory (created, checked writable at start), the
+// numbered HDF5 snapshots (snapshot_000000.h5, ...), the XDMF index run.xmf that ParaView opens,
+// and the decision of when the next snapshot is due.
+
+#include <string>
+#include <vector>
+
+#include "src/deck/deck.hpp"
+#include "src/io/xdmf.hpp"
+#include "src/parallel/domain.hpp"
+#include "src/run/flow_state.hpp"
+
+namespace bagnold::run {
+
+class OutputWriter {
+ public:
+  // Collective. Throws io::Hdf5Error with the directory's name if it cannot be created or written.
+  OutputWriter(const deck::Deck& deck, const parallel::Domain& domain);
+
+  bool snapshot_due(double time) const { return time >= m_next_time - 1e-12 * (1.0 + time); }
+  // Collective: writes a snapshot of `state` and updates the index; returns its path.
+  std::string write(const FlowState& state, double time, long step, double dt);
+  const std::string& directory() const { return m_directory; }
+
+ private:
+  const parallel::Domain& m_domain;
+  std::string m_directory;
+  std::string m_title;
+  double m_interval;
+  double m_next_time = 0.0;
+  std::vector<io::IndexedSnapshot> m_index;
+};
+
+}  // namespace bagnold::run

@@ -13,12 +13,12 @@
 namespace bagnold::models {
 
 struct CoefficientSpec {
-  std::string name;                      // deck key, snake_case
-  std::string unit;                      // "-" for dimensionless
+  std::string name;  // deck key, snake_case
+  std::string unit;  // "-" for dimensionless
   std::variant<double, std::string> default_value;
   double min = -std::numeric_limits<double>::infinity();  // inclusive, for real values
   double max = std::numeric_limits<double>::infinity();
-  std::vector<std::string> choices;      // allowed values, for string options
+  std::vector<std::string> choices;  // allowed values, for string options
   std::string doc;
 };
 

@@ -35,9 +35,12 @@ const std::vector<std::string>& kind_names();
 template <class Real>
 Real evaluate(Kind kind, Real phi, double critical_fraction) {
   switch (kind) {
-    case Kind::torquato: return torquato(phi, critical_fraction);
-    case Kind::chialvo_sundaresan: return chialvo_sundaresan(phi, critical_fraction);
-    case Kind::carnahan_starling: break;
+    case Kind::torquato:
+      return torquato(phi, critical_fraction);
+    case Kind::chialvo_sundaresan:
+      return chialvo_sundaresan(phi, critical_fraction);
+    case Kind::carnahan_starling:
+      break;
   }
   return carnahan_starling(phi);
 }

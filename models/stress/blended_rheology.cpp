@@ -62,8 +62,8 @@ double scaled_shear_stress(double phi, double scaled_rate, double scaled_pressur
   if (bond_number > 0.0) {
     // D Eq. 19 with γ̂ in the rate factor (as D Eq. 25): α₃ φ Bo* · α₄√Bo*/(γ̂ + α₄√Bo*).
     const double critical_rate = c.cohesive_rate * std::sqrt(bond_number);
-    cohesive = c.cohesive_stress_ratio * phi * bond_number * critical_rate /
-               (scaled_rate + critical_rate);
+    cohesive =
+        c.cohesive_stress_ratio * phi * bond_number * critical_rate / (scaled_rate + critical_rate);
   }
   return ratio * scaled_pressure + cohesive;
 }

@@ -29,26 +29,26 @@ namespace bagnold::models::blended {
 
 struct Constants {
   // μ-dependent (from the model's table at the material's μ)
-  double critical_fraction;         // φ_c [-]
-  double quasi_static_exponent;     // ε [-]  (2/3 in App. A)
-  double inertial_exponent;         // χ [-]  (2 in App. A)
-  double quasi_static;              // α_QS [-]
-  double intermediate;              // α_int [-]
-  double yield_stress_ratio;        // η_s [-]
-  double cohesive_1 = 0.0;          // α_coh,1 [-]
+  double critical_fraction;            // φ_c [-]
+  double quasi_static_exponent;        // ε [-]  (2/3 in App. A)
+  double inertial_exponent;            // χ [-]  (2 in App. A)
+  double quasi_static;                 // α_QS [-]
+  double intermediate;                 // α_int [-]
+  double yield_stress_ratio;           // η_s [-]
+  double cohesive_1 = 0.0;             // α_coh,1 [-]
   double cohesive_stress_ratio = 0.0;  // α₃ [-]
   // μ-independent
-  double inertial;                  // α_inert [-]
-  double transition_inertial_number;  // I_0 [-]
-  double hard_rise;                 // α₁ [-]
-  double hard_exponent;             // β₁ [-]
-  double transition_shear_rate;     // γ̂_0 [-]
-  double soft_drop;                 // α₂ [-]
-  double soft_exponent;             // β₂ [-]
+  double inertial;                        // α_inert [-]
+  double transition_inertial_number;      // I_0 [-]
+  double hard_rise;                       // α₁ [-]
+  double hard_exponent;                   // β₁ [-]
+  double transition_shear_rate;           // γ̂_0 [-]
+  double soft_drop;                       // α₂ [-]
+  double soft_exponent;                   // β₂ [-]
   double cohesive_onset_fraction = 0.45;  // φ_a [-]
-  double cohesive_2 = 0.0;          // α_coh,2 [-]
-  double cohesive_rate = 0.1;       // α₄ [-]
-  double onset_smoothing = 1e-4;    // x_s [-], smoothing of |φ − φ_c|^ε at onset (dense_limit.hpp)
+  double cohesive_2 = 0.0;                // α_coh,2 [-]
+  double cohesive_rate = 0.1;             // α₄ [-]
+  double onset_smoothing = 1e-4;  // x_s [-], smoothing of |φ − φ_c|^ε at onset (dense_limit.hpp)
 };
 
 // γ̂ = γ̇ d / sqrt(k/(ρ_s d)), App. A Sec. III.

@@ -24,14 +24,14 @@ CoefficientSpec dilute_cutoff_spec() {
 std::vector<CoefficientSpec> DenseLimit::specs() {
   return {
       real_spec("jamming_margin", "-", 0.01, 1e-9, 0.1,
-       "δ [-]: g0 (and the dense temperature branch) are evaluated at "
-              "min(φ, φ_c(μ) − δ); the quasi-static pressure starts at φ_c − δ."),
+                "δ [-]: g0 (and the dense temperature branch) are evaluated at "
+                "min(φ, φ_c(μ) − δ); the quasi-static pressure starts at φ_c − δ."),
       real_spec("quasi_static_scale", "-", 1.0, 0.0, 1e3,
-       "s [-]: multiplies α_QS(μ) (App. A Table II) in the quasi-static pressure "
-              "s α_QS (k/d) (φ − φ_c + δ)^{2/3} (App. A Eq. 8 form); 0 switches it off."),
+                "s [-]: multiplies α_QS(μ) (App. A Table II) in the quasi-static pressure "
+                "s α_QS (k/d) (φ − φ_c + δ)^{2/3} (App. A Eq. 8 form); 0 switches it off."),
       real_spec("onset_smoothing", "-", 1e-4, 0.0, 0.01,
-       "x_s [-]: volume-fraction width over which the 2/3 power of the quasi-static "
-              "pressure is smoothed so that dP_s/dε_s is finite at onset."),
+                "x_s [-]: volume-fraction width over which the 2/3 power of the quasi-static "
+                "pressure is smoothed so that dP_s/dε_s is finite at onset."),
       dilute_cutoff_spec(),
   };
 }
@@ -54,8 +54,8 @@ Real DenseLimit::quasi_static_pressure(Real phi, double critical_fraction,
                                        double stiffness_over_diameter, double friction) const {
   if (quasi_static_scale == 0.0) return Real(0.0);
   // App. A Eq. 8 with the onset moved from φ_c to φ_c − δ, where the kinetic part stops stiffening.
-  const double coefficient =
-      quasi_static_scale * chialvo2012::quasi_static_coefficient(friction) * stiffness_over_diameter;
+  const double coefficient = quasi_static_scale * chialvo2012::quasi_static_coefficient(friction) *
+                             stiffness_over_diameter;
   return coefficient *
          smoothed_power(phi - jamming_fraction(critical_fraction), 2.0 / 3.0, onset_smoothing);
 }

@@ -24,9 +24,9 @@ class FrictionTable {
 
 // Chialvo, Sun & Sundaresan (2012): App. A Tables I–II, reused by App. B Table II.
 namespace chialvo2012 {
-double critical_fraction(double friction);            // φ_c(μ) [-], App. A Table I
-double yield_stress_ratio(double friction);           // η_s(μ) [-], App. A Table II
-double quasi_static_coefficient(double friction);     // α_QS(μ) [-], App. A Table II
+double critical_fraction(double friction);         // φ_c(μ) [-], App. A Table I
+double yield_stress_ratio(double friction);        // η_s(μ) [-], App. A Table II
+double quasi_static_coefficient(double friction);  // α_QS(μ) [-], App. A Table II
 }  // namespace chialvo2012
 
 }  // namespace bagnold::models

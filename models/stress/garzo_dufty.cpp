@@ -41,11 +41,11 @@ Real bulk_factor(Real phi, Real g0, double restitution) {
   return (4.0 / (3.0 * std::sqrt(pi))) * (1.0 + restitution) * phi * phi * g0;
 }
 
-#define BAGNOLD_INSTANTIATE(Real)                                    \
-  template Real pressure_factor(Real, Real, double);                 \
-  template Real scaled_viscosity(Real, Real, double);                \
-  template Real shear_factor(Real, Real, double);                    \
-  template Real dissipation_factor(Real, Real, double);              \
+#define BAGNOLD_INSTANTIATE(Real)                       \
+  template Real pressure_factor(Real, Real, double);    \
+  template Real scaled_viscosity(Real, Real, double);   \
+  template Real shear_factor(Real, Real, double);       \
+  template Real dissipation_factor(Real, Real, double); \
   template Real bulk_factor(Real, Real, double);
 BAGNOLD_INSTANTIATE(double)
 BAGNOLD_INSTANTIATE(Dual)

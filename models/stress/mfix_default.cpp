@@ -34,9 +34,8 @@ LunCoefficients<Real> lun_coefficients(Real phi, const Material& m) {
                 (1.0 + 1.6 * eta * (3.0 * eta - 2.0) * phi * g0) +
             0.6 * eta * bulk;
   c.bulk = eta * bulk;
-  c.dissipation =
-      12.0 * (1.0 - m.restitution * m.restitution) * m.density * phi * phi * g0 /
-      (std::sqrt(pi) * m.diameter);
+  c.dissipation = 12.0 * (1.0 - m.restitution * m.restitution) * m.density * phi * phi * g0 /
+                  (std::sqrt(pi) * m.diameter);
   return c;
 }
 
@@ -100,23 +99,23 @@ Constants read_constants(const Coefficients& c) {
           .dilute_cutoff = real_coefficient(c, "dilute_cutoff")};
 }
 
-[[maybe_unused]] const bool registered = stress_registry().add({
-    .name = "mfix-default",
-    .summary = "MFIX default: Lun et al. kinetic theory, Schaeffer friction, plastic pressure",
-    .coefficients = concatenate(
-        {{real_spec("packed_gas_fraction", "-", 0.4, 0.2, 0.6,
-                    "ε_g* [-] (MFIX EP_STAR): below this gas fraction the plastic regime holds."),
-          real_spec("plastic_coefficient", "Pa", 1e24, 0.0, 1e30,
-                    "A [Pa]: plastic pressure P* = A (ε_g* − ε_g)^n (MFIX: 10²⁵ dyn/cm²)."),
-          real_spec("plastic_exponent", "-", 10.0, 1.0, 20.0,
-                    "n [-]: exponent of the plastic pressure (MFIX: 10)."),
-          real_spec("internal_friction_angle", "deg", 30.0, 0.0, 90.0,
-                    "φ_f [deg] (MFIX PHI): Schaeffer's frictional viscosity P* sin φ_f/γ̇_s."),
-          dilute_cutoff_spec()},
-         ViscosityLimits::specs(100.0)}),
-    .make = [](const Coefficients& c) -> std::unique_ptr<SolidsStressModel> {
-      return std::make_unique<MfixDefault>(read_constants(c), ViscosityLimits::read(c));
-    }});
+[[maybe_unused]] const bool registered = stress_registry().add(
+    {.name = "mfix-default",
+     .summary = "MFIX default: Lun et al. kinetic theory, Schaeffer friction, plastic pressure",
+     .coefficients = concatenate(
+         {{real_spec("packed_gas_fraction", "-", 0.4, 0.2, 0.6,
+                     "ε_g* [-] (MFIX EP_STAR): below this gas fraction the plastic regime holds."),
+           real_spec("plastic_coefficient", "Pa", 1e24, 0.0, 1e30,
+                     "A [Pa]: plastic pressure P* = A (ε_g* − ε_g)^n (MFIX: 10²⁵ dyn/cm²)."),
+           real_spec("plastic_exponent", "-", 10.0, 1.0, 20.0,
+                     "n [-]: exponent of the plastic pressure (MFIX: 10)."),
+           real_spec("internal_friction_angle", "deg", 30.0, 0.0, 90.0,
+                     "φ_f [deg] (MFIX PHI): Schaeffer's frictional viscosity P* sin φ_f/γ̇_s."),
+           dilute_cutoff_spec()},
+          ViscosityLimits::specs(100.0)}),
+     .make = [](const Coefficients& c) -> std::unique_ptr<SolidsStressModel> {
+       return std::make_unique<MfixDefault>(read_constants(c), ViscosityLimits::read(c));
+     }});
 }  // namespace
 
 }  // namespace bagnold::models::mfix_default

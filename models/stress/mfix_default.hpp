@@ -20,19 +20,18 @@
 namespace bagnold::models::mfix_default {
 
 struct Constants {
-  double packed_gas_fraction = 0.4;        // ε_g* [-]
-  double plastic_coefficient = 1e24;       // A [Pa]
-  double plastic_exponent = 10.0;          // n [-]
-  double internal_friction_angle = 30.0;   // φ_f [deg]
-  double dilute_cutoff = 1e-6;             // φ_min [-]
+  double packed_gas_fraction = 0.4;       // ε_g* [-]
+  double plastic_coefficient = 1e24;      // A [Pa]
+  double plastic_exponent = 10.0;         // n [-]
+  double internal_friction_angle = 30.0;  // φ_f [deg]
+  double dilute_cutoff = 1e-6;            // φ_min [-]
 };
 
 class MfixDefault final : public SolidsStressModel {
  public:
   MfixDefault(const Constants& constants, const ViscosityLimits& limits);
   std::string name() const override { return "mfix-default"; }
-  void evaluate(const Material& material, const SolidsState& in,
-                SolidsStress& out) const override;
+  void evaluate(const Material& material, const SolidsState& in, SolidsStress& out) const override;
   bool defines_temperature() const override { return true; }
 
  private:

@@ -54,9 +54,9 @@ SteadyState<Real> steady_state(Real phi, const Material& material, const Constan
   // Eq. 30: dilute and dense temperatures, the larger wins (Eq. 28).
   const Real dilute_temperature = s.shear_factor / s.friction_dissipation;
   const Real dense_temperature = constants.dense_temperature / sqrt(critical - phi_jammed);
-  s.temperature_factor =
-      value_of(dilute_temperature) > value_of(dense_temperature) ? dilute_temperature
-                                                                 : dense_temperature;
+  s.temperature_factor = value_of(dilute_temperature) > value_of(dense_temperature)
+                             ? dilute_temperature
+                             : dense_temperature;
   // Eq. 35 with p = ρ_s H T and T = M (γ̇d)²: I′ = γ̇d/(φ √(H M) γ̇d), rate independent.
   s.inertial_number = 1.0 / (phi * sqrt(s.pressure_factor * s.temperature_factor));
   s.chi = dense_to_dilute_chi(s.inertial_number, constants.transition_inertial_number);
@@ -79,8 +79,7 @@ template double dense_to_dilute_chi(double, double);
 template Dual dense_to_dilute_chi(Dual, double);
 template SteadyState<double> steady_state(double, const Material&, const Constants&,
                                           const DenseLimit&);
-template SteadyState<Dual> steady_state(Dual, const Material&, const Constants&,
-                                        const DenseLimit&);
+template SteadyState<Dual> steady_state(Dual, const Material&, const Constants&, const DenseLimit&);
 
 Mkt::Mkt(const Constants& constants, const DenseLimit& dense, const ViscosityLimits& limits)
     : m_constants(constants), m_dense(dense), m_limits(limits) {}
@@ -110,16 +109,15 @@ void Mkt::evaluate(const Material& material, const SolidsState& in, SolidsStress
     // τ = (τ_s + τ_inertial)/p · p with p ∝ γ̇²: the viscosity (τ/γ̇) is written without dividing
     // by γ̇, so it is exact (and zero) at γ̇ = 0.
     const double kinetic_viscosity = (s.yield_ratio.value + s.inertial_ratio.value) * rho *
-                                     s.pressure_factor.value * s.temperature_factor.value * d *
-                                     d * shear_rate;
+                                     s.pressure_factor.value * s.temperature_factor.value * d * d *
+                                     shear_rate;
     p.shear_viscosity = m_limits.capped(
         kinetic_viscosity +
         m_limits.rate_independent_viscosity(yield_ratio * quasi_static_pressure.value, shear_rate));
     // The report leaves the bulk viscosity unmodified: Garzó–Dufty's, with e.
-    p.bulk_viscosity = rho * d *
-                       garzo_dufty::bulk_factor(phi, s.radial_distribution.value,
-                                                material.restitution) *
-                       std::sqrt(temperature);
+    p.bulk_viscosity =
+        rho * d * garzo_dufty::bulk_factor(phi, s.radial_distribution.value, material.restitution) *
+        std::sqrt(temperature);
     return p;
   });
 }
@@ -133,29 +131,30 @@ Constants read_constants(const Coefficients& c) {
           .psi_exponent = string_coefficient(c, "psi_exponent") == "openfoam" ? -1.5 : -2.0 / 3.0};
 }
 
-[[maybe_unused]] const bool registered = stress_registry().add({
-    .name = "mkt",
-    .summary = "Modified kinetic theory (Chialvo & Sundaresan 2013; App. B Tables I–II)",
-    .coefficients = concatenate(
-        {{real_spec("i0", "-", 0.2, 1e-6, 10.0,
-                    "I_0 [-]: transition modified inertial number of χ(I′), App. B Eq. 41, "
-                    "Table II."),
-          real_spec("alpha", "-", 0.36, 0.0, 10.0,
-                    "α [-]: dense-regime slope of η in I′, App. B Eqs. 42, 49, Table II."),
-          real_spec("alpha_1", "-", 0.06, 0.0, 10.0,
-                    "α₁ [-]: dense temperature T = α₁(γ̇d)²/(φ_c − φ)^{1/2}, App. B Eq. 27, "
-                    "Table II."),
-          real_spec("alpha_2", "-", 0.58, 0.0, 10.0,
-                    "α₂ [-]: dense part of g0 = g0_CS + α₂φ²/(φ_c − φ)^{3/2}, App. B Eq. 31, "
-                    "Table II."),
-          choice_spec("psi_exponent", "report", {"report", "openfoam"},
-                      "n [-], exponent of (1 − e²) in ψ, App. B Eq. 32: report = −2/3 as printed, "
-                      "openfoam = −3/2 as in the authors' OpenFOAM code.")},
-         DenseLimit::specs(), ViscosityLimits::specs()}),
-    .make = [](const Coefficients& c) -> std::unique_ptr<SolidsStressModel> {
-      return std::make_unique<Mkt>(read_constants(c), DenseLimit::read(c),
-                                   ViscosityLimits::read(c));
-    }});
+[[maybe_unused]] const bool registered = stress_registry().add(
+    {.name = "mkt",
+     .summary = "Modified kinetic theory (Chialvo & Sundaresan 2013; App. B Tables I–II)",
+     .coefficients = concatenate(
+         {{real_spec("i0", "-", 0.2, 1e-6, 10.0,
+                     "I_0 [-]: transition modified inertial number of χ(I′), App. B Eq. 41, "
+                     "Table II."),
+           real_spec("alpha", "-", 0.36, 0.0, 10.0,
+                     "α [-]: dense-regime slope of η in I′, App. B Eqs. 42, 49, Table II."),
+           real_spec("alpha_1", "-", 0.06, 0.0, 10.0,
+                     "α₁ [-]: dense temperature T = α₁(γ̇d)²/(φ_c − φ)^{1/2}, App. B Eq. 27, "
+                     "Table II."),
+           real_spec("alpha_2", "-", 0.58, 0.0, 10.0,
+                     "α₂ [-]: dense part of g0 = g0_CS + α₂φ²/(φ_c − φ)^{3/2}, App. B Eq. 31, "
+                     "Table II."),
+           choice_spec("psi_exponent", "report", {"report", "openfoam"},
+                       "n [-], exponent of (1 − e²) in ψ, App. B Eq. 32: report = −2/3 as printed, "
+                       "openfoam = −3/2 as in the authors' OpenFOAM code.")},
+          DenseLimit::specs(),
+          ViscosityLimits::specs()}),
+     .make = [](const Coefficients& c) -> std::unique_ptr<SolidsStressModel> {
+       return std::make_unique<Mkt>(read_constants(c), DenseLimit::read(c),
+                                    ViscosityLimits::read(c));
+     }});
 }  // namespace
 
 }  // namespace bagnold::models::mkt

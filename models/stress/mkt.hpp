@@ -23,11 +23,11 @@ namespace bagnold::models::mkt {
 
 // μ-independent constants of App. B Table II and the ψ exponent (model-notes.md).
 struct Constants {
-  double transition_inertial_number = 0.2;   // I_0 [-]
-  double dense_slope = 0.36;                 // α [-], dense prefactor of I′ in η (Eq. 42)
-  double dense_temperature = 0.06;           // α₁ [-], Eq. 27
-  double radial_distribution_scale = 0.58;   // α₂ [-], Eq. 31
-  double psi_exponent = -2.0 / 3.0;          // exponent of (1 − e²) in ψ, Eq. 32
+  double transition_inertial_number = 0.2;  // I_0 [-]
+  double dense_slope = 0.36;                // α [-], dense prefactor of I′ in η (Eq. 42)
+  double dense_temperature = 0.06;          // α₁ [-], Eq. 27
+  double radial_distribution_scale = 0.58;  // α₂ [-], Eq. 31
+  double psi_exponent = -2.0 / 3.0;         // exponent of (1 − e²) in ψ, Eq. 32
 };
 
 // App. B Eqs. 22–23: e_eff = e − (3/2) μ exp(−3μ).
@@ -45,19 +45,19 @@ Real dense_to_dilute_chi(Real modified_inertial_number, double transition_inerti
 // Dimensional ones are per (γ̇d)² so they do not depend on the shear rate (Bagnold scaling).
 template <class Real>
 struct SteadyState {
-  Real radial_distribution;   // g0, Eq. 31, at min(φ, φ_c − δ)
-  Real pressure_factor;       // H, Eq. 4
-  Real shear_factor;          // J, Eq. 5
-  Real dissipation_factor;    // K, Eq. 6
-  Real friction_dissipation;  // K′, Eq. 25 (e_eff in place of e, in K only)
-  Real beta;                  // β, Eq. 38
-  Real temperature_factor;    // M = T/(γ̇d)², Eq. 30 (dense branch at the capped φ)
-  Real inertial_number;       // I′ = 1/(φ √(H M)), Eq. 35 with p = ρ_s H M (γ̇d)²
-  Real chi;                   // χ(I′), Eq. 41
-  Real shear_correction;      // δ_τ, Eq. 49
-  Real dissipation_correction;// δ_Γ = β √H δ_τ/(φ K′ M): Eq. 51 with the missing 1/φ
-  Real yield_ratio;           // τ_s/p = η_s χ_s, Eq. 45
-  Real inertial_ratio;        // τ_inertial/p = β I′ δ_τ, Table I
+  Real radial_distribution;     // g0, Eq. 31, at min(φ, φ_c − δ)
+  Real pressure_factor;         // H, Eq. 4
+  Real shear_factor;            // J, Eq. 5
+  Real dissipation_factor;      // K, Eq. 6
+  Real friction_dissipation;    // K′, Eq. 25 (e_eff in place of e, in K only)
+  Real beta;                    // β, Eq. 38
+  Real temperature_factor;      // M = T/(γ̇d)², Eq. 30 (dense branch at the capped φ)
+  Real inertial_number;         // I′ = 1/(φ √(H M)), Eq. 35 with p = ρ_s H M (γ̇d)²
+  Real chi;                     // χ(I′), Eq. 41
+  Real shear_correction;        // δ_τ, Eq. 49
+  Real dissipation_correction;  // δ_Γ = β √H δ_τ/(φ K′ M): Eq. 51 with the missing 1/φ
+  Real yield_ratio;             // τ_s/p = η_s χ_s, Eq. 45
+  Real inertial_ratio;          // τ_inertial/p = β I′ δ_τ, Table I
 };
 
 template <class Real>
@@ -68,8 +68,7 @@ class Mkt final : public SolidsStressModel {
  public:
   Mkt(const Constants& constants, const DenseLimit& dense, const ViscosityLimits& limits);
   std::string name() const override { return "mkt"; }
-  void evaluate(const Material& material, const SolidsState& in,
-                SolidsStress& out) const override;
+  void evaluate(const Material& material, const SolidsState& in, SolidsStress& out) const override;
   bool defines_temperature() const override { return true; }
 
  private:

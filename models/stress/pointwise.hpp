@@ -13,10 +13,10 @@
 namespace bagnold::models {
 
 struct PointStress {
-  double pressure = 0.0;               // P_s [Pa]
-  double pressure_derivative = 0.0;    // dP_s/dε_s [Pa] at fixed strain rate
-  double shear_viscosity = 0.0;        // μ_s [Pa s]
-  double bulk_viscosity = 0.0;         // λ_s [Pa s]
+  double pressure = 0.0;             // P_s [Pa]
+  double pressure_derivative = 0.0;  // dP_s/dε_s [Pa] at fixed strain rate
+  double shear_viscosity = 0.0;      // μ_s [Pa s]
+  double bulk_viscosity = 0.0;       // λ_s [Pa s]
   double granular_temperature = std::numeric_limits<double>::quiet_NaN();  // T [m²/s²]
 };
 
@@ -35,7 +35,8 @@ inline void require_valid_material(const Material& m, const std::string& model) 
                      m.restitution >= 0.0 && m.restitution < 1.0 && m.friction >= 0.0 &&
                      m.bond_number >= 0.0;
   if (!valid)
-    throw std::invalid_argument(model + ": material needs d > 0, ρ_s > 0, k > 0, 0 ≤ e < 1, "
+    throw std::invalid_argument(model +
+                                ": material needs d > 0, ρ_s > 0, k > 0, 0 ≤ e < 1, "
                                 "μ ≥ 0 and Bo* ≥ 0");
 }
 
@@ -51,8 +52,8 @@ void evaluate_cells(const SolidsState& in, SolidsStress& out, PointFunction&& po
   for (std::size_t i = 0; i < n; ++i) {
     const double phi = in.solids_fraction[i] > 0.0 ? in.solids_fraction[i] : 0.0;
     const double divergence = in.divergence[i];
-    const PointStress s = point(phi, deviatoric_shear_rate(in.strain_rate[i], divergence),
-                                divergence);
+    const PointStress s =
+        point(phi, deviatoric_shear_rate(in.strain_rate[i], divergence), divergence);
     out.pressure[i] = s.pressure;
     out.pressure_derivative[i] = s.pressure_derivative;
     out.shear_viscosity[i] = s.shear_viscosity;

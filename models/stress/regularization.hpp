@@ -20,7 +20,9 @@ struct ViscosityLimits {
 
   // Viscosity of a stress τ that does not vanish with the shear rate.
   double rate_independent_viscosity(double stress, double shear_rate) const;
-  double capped(double viscosity) const { return viscosity < max_viscosity ? viscosity : max_viscosity; }
+  double capped(double viscosity) const {
+    return viscosity < max_viscosity ? viscosity : max_viscosity;
+  }
 };
 
 }  // namespace bagnold::models

@@ -38,26 +38,24 @@ std::vector<RheometerRow> shear_rheometer(const SolidsStressModel& model, const 
   for (std::size_t k = 0; k < n; ++k) {
     const double shear_stress = shear_viscosity[k] * rate[k];
     const bool has_pressure = pressure[k] > 0.0;
-    rows.push_back({.model = model.name(),
-                    .phi = phi[k],
-                    .shear_rate = rate[k],
-                    .pressure = pressure[k],
-                    .shear_stress = shear_stress,
-                    .stress_ratio = has_pressure ? shear_stress / pressure[k] : not_defined,
-                    .granular_temperature =
-                        model.defines_temperature() ? temperature[k] : not_defined,
-                    .inertial_number =
-                        has_pressure ? rate[k] * material.diameter /
-                                           std::sqrt(pressure[k] / material.density)
-                                     : not_defined});
+    rows.push_back(
+        {.model = model.name(),
+         .phi = phi[k],
+         .shear_rate = rate[k],
+         .pressure = pressure[k],
+         .shear_stress = shear_stress,
+         .stress_ratio = has_pressure ? shear_stress / pressure[k] : not_defined,
+         .granular_temperature = model.defines_temperature() ? temperature[k] : not_defined,
+         .inertial_number =
+             has_pressure ? rate[k] * material.diameter / std::sqrt(pressure[k] / material.density)
+                          : not_defined});
   }
   return rows;
 }
 
 RheometerRow shear_rheometer(const SolidsStressModel& model, const Material& material, double phi,
                              double shear_rate) {
-  return shear_rheometer(model, material, std::vector<double>{phi},
-                         std::vector<double>{shear_rate})
+  return shear_rheometer(model, material, std::vector<double>{phi}, std::vector<double>{shear_rate})
       .front();
 }
 

@@ -16,18 +16,18 @@ namespace bagnold::models {
 // model without one; stress ratio and inertial number where the pressure vanishes).
 struct RheometerRow {
   std::string model;
-  double phi;                    // φ [-]
-  double shear_rate;             // γ̇ [1/s]
-  double pressure;               // P_s [Pa]
-  double shear_stress;           // τ = μ_s γ̇ [Pa], with the model's viscosity regularization
-  double stress_ratio;           // η = τ/P_s [-]
-  double granular_temperature;   // T [m²/s²]
-  double inertial_number;        // I = γ̇ d / sqrt(P_s/ρ_s) [-]
+  double phi;                   // φ [-]
+  double shear_rate;            // γ̇ [1/s]
+  double pressure;              // P_s [Pa]
+  double shear_stress;          // τ = μ_s γ̇ [Pa], with the model's viscosity regularization
+  double stress_ratio;          // η = τ/P_s [-]
+  double granular_temperature;  // T [m²/s²]
+  double inertial_number;       // I = γ̇ d / sqrt(P_s/ρ_s) [-]
 };
 
 // One point.
-RheometerRow shear_rheometer(const SolidsStressModel& model, const Material& material,
-                             double phi, double shear_rate);
+RheometerRow shear_rheometer(const SolidsStressModel& model, const Material& material, double phi,
+                             double shear_rate);
 
 // Every combination, φ outermost, evaluated in one call to the model.
 std::vector<RheometerRow> shear_rheometer(const SolidsStressModel& model, const Material& material,

@@ -68,18 +68,20 @@ void Skt::evaluate(const Material& material, const SolidsState& in, SolidsStress
 }
 
 namespace {
-[[maybe_unused]] const bool registered = stress_registry().add({
-    .name = "skt",
-    .summary = "Standard kinetic theory: Garzó–Dufty, algebraic temperature (App. B Eqs. 1–18)",
-    .coefficients = concatenate(
-        {{choice_spec("radial_distribution", "carnahan-starling", rdf::kind_names(),
-                      "g0 [-]: carnahan-starling (App. B Eq. 11), torquato (Eq. 12, product form, "
-                      "φ_c(μ)) or mkt (Eq. 31, φ_c(μ)), to share MKT's jamming point.")},
-         DenseLimit::specs(), ViscosityLimits::specs()}),
-    .make = [](const Coefficients& c) -> std::unique_ptr<SolidsStressModel> {
-      return std::make_unique<Skt>(rdf::kind_from_name(string_coefficient(c, "radial_distribution")),
-                                   DenseLimit::read(c), ViscosityLimits::read(c));
-    }});
+[[maybe_unused]] const bool registered = stress_registry().add(
+    {.name = "skt",
+     .summary = "Standard kinetic theory: Garzó–Dufty, algebraic temperature (App. B Eqs. 1–18)",
+     .coefficients = concatenate(
+         {{choice_spec("radial_distribution", "carnahan-starling", rdf::kind_names(),
+                       "g0 [-]: carnahan-starling (App. B Eq. 11), torquato (Eq. 12, product form, "
+                       "φ_c(μ)) or mkt (Eq. 31, φ_c(μ)), to share MKT's jamming point.")},
+          DenseLimit::specs(),
+          ViscosityLimits::specs()}),
+     .make = [](const Coefficients& c) -> std::unique_ptr<SolidsStressModel> {
+       return std::make_unique<Skt>(
+           rdf::kind_from_name(string_coefficient(c, "radial_distribution")), DenseLimit::read(c),
+           ViscosityLimits::read(c));
+     }});
 }  // namespace
 
 }  // namespace bagnold::models::skt

@@ -21,12 +21,12 @@ namespace bagnold::models::skt {
 // Steady-shear kinetic quantities at one point (Real = double, or Dual for d/dφ).
 template <class Real>
 struct KineticState {
-  Real radial_distribution;   // g0 at the capped fraction
-  Real pressure_factor;       // H, Eq. 4
-  Real shear_factor;          // J, Eq. 5
-  Real dissipation_factor;    // K, Eq. 6
-  Real bulk_factor;           // J_b (garzo_dufty.hpp)
-  Real temperature_factor;    // T/(γ̇ d)² = J/K, Eq. 15
+  Real radial_distribution;  // g0 at the capped fraction
+  Real pressure_factor;      // H, Eq. 4
+  Real shear_factor;         // J, Eq. 5
+  Real dissipation_factor;   // K, Eq. 6
+  Real bulk_factor;          // J_b (garzo_dufty.hpp)
+  Real temperature_factor;   // T/(γ̇ d)² = J/K, Eq. 15
 };
 
 template <class Real>
@@ -37,8 +37,7 @@ class Skt final : public SolidsStressModel {
  public:
   Skt(rdf::Kind radial, const DenseLimit& dense, const ViscosityLimits& limits);
   std::string name() const override { return "skt"; }
-  void evaluate(const Material& material, const SolidsState& in,
-                SolidsStress& out) const override;
+  void evaluate(const Material& material, const SolidsState& in, SolidsStress& out) const override;
   bool defines_temperature() const override { return true; }
 
  private:

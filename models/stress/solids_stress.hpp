@@ -24,11 +24,11 @@ struct SolidsState {
 };
 
 struct SolidsStress {
-  std::span<double> pressure;               // P_s [Pa]
-  std::span<double> pressure_derivative;    // dP_s/dε_s [Pa] at fixed strain rate
-  std::span<double> shear_viscosity;        // μ_s [Pa s]
-  std::span<double> bulk_viscosity;         // λ_s [Pa s]
-  std::span<double> granular_temperature;   // Θ [m²/s²]; NaN where the model defines none
+  std::span<double> pressure;              // P_s [Pa]
+  std::span<double> pressure_derivative;   // dP_s/dε_s [Pa] at fixed strain rate
+  std::span<double> shear_viscosity;       // μ_s [Pa s]
+  std::span<double> bulk_viscosity;        // λ_s [Pa s]
+  std::span<double> granular_temperature;  // Θ [m²/s²]; NaN where the model defines none
 };
 
 class SolidsStressModel {

@@ -9,9 +9,9 @@ namespace bagnold::models::steady_shear {
 
 blended::Constants constants_at(double friction, const Constants& k) {
   blended::Constants c;
-  c.critical_fraction = chialvo2012::critical_fraction(friction);  // A Table I
-  c.quasi_static_exponent = 2.0 / 3.0;                            // a = 2/3, A Eq. 8
-  c.inertial_exponent = 2.0;                                      // A Eq. 10
+  c.critical_fraction = chialvo2012::critical_fraction(friction);    // A Table I
+  c.quasi_static_exponent = 2.0 / 3.0;                               // a = 2/3, A Eq. 8
+  c.inertial_exponent = 2.0;                                         // A Eq. 10
   c.quasi_static = chialvo2012::quasi_static_coefficient(friction);  // A Table II
   c.intermediate = k.intermediate;
   c.yield_stress_ratio = chialvo2012::yield_stress_ratio(friction);  // A Table II
@@ -53,35 +53,35 @@ Constants read_constants(const Coefficients& c) {
           .onset_smoothing = real_coefficient(c, "onset_smoothing")};
 }
 
-[[maybe_unused]] const bool registered = stress_registry().add({
-    .name = "steady-shear",
-    .summary = "Blended steady-shear rheology (Chialvo, Sun & Sundaresan 2012; App. A Eqs. 7–15)",
-    .coefficients = concatenate(
-        {{real_spec("alpha_inert", "-", 0.021, 0.0, 10.0,
-                    "α_inert [-]: inertial pressure p d/k = α_inert γ̂²/|φ − φ_c|², App. A Eq. 10, "
-                    "Table II."),
-          real_spec("alpha_int", "-", 0.099, 0.0, 10.0,
-                    "α_int [-]: intermediate pressure p d/k = α_int γ̂^{1/2}, App. A Eq. 9, "
-                    "Table II."),
-          real_spec("i0", "-", 0.32, 1e-6, 10.0,
-                    "I_0 [-]: transition inertial number of η_hard, App. A Eq. 11, Table II."),
-          real_spec("alpha_1", "-", 0.37, 0.0, 10.0,
-                    "α₁ [-]: rise of η_hard above η_s, App. A Eq. 11, Table II."),
-          real_spec("beta_1", "-", 1.5, 0.1, 10.0,
-                    "β₁ [-]: exponent of η_hard, App. A Eq. 11, Table II."),
-          real_spec("gamma_hat_0", "-", 0.1, 1e-9, 10.0,
-                    "γ̂_0 [-]: transition scaled shear rate of η_soft, App. A Eq. 12, Table II."),
-          real_spec("alpha_2", "-", 0.2, 0.0, 10.0,
-                    "α₂ [-]: softness drop of η, App. A Eq. 12, Table II."),
-          real_spec("beta_2", "-", 1.0, 0.1, 10.0,
-                    "β₂ [-]: exponent of η_soft, App. A Eq. 12, Table II."),
-          real_spec("onset_smoothing", "-", 1e-4, 0.0, 0.01,
-                    "x_s [-]: volume-fraction width over which |φ − φ_c|^{2/3} (App. A Eq. 8) is "
-                    "smoothed so that dP_s/dε_s is finite at φ_c.")},
-         ViscosityLimits::specs()}),
-    .make = [](const Coefficients& c) -> std::unique_ptr<SolidsStressModel> {
-      return std::make_unique<SteadyShear>(read_constants(c), ViscosityLimits::read(c));
-    }});
+[[maybe_unused]] const bool registered = stress_registry().add(
+    {.name = "steady-shear",
+     .summary = "Blended steady-shear rheology (Chialvo, Sun & Sundaresan 2012; App. A Eqs. 7–15)",
+     .coefficients = concatenate(
+         {{real_spec("alpha_inert", "-", 0.021, 0.0, 10.0,
+                     "α_inert [-]: inertial pressure p d/k = α_inert γ̂²/|φ − φ_c|², App. A Eq. 10, "
+                     "Table II."),
+           real_spec("alpha_int", "-", 0.099, 0.0, 10.0,
+                     "α_int [-]: intermediate pressure p d/k = α_int γ̂^{1/2}, App. A Eq. 9, "
+                     "Table II."),
+           real_spec("i0", "-", 0.32, 1e-6, 10.0,
+                     "I_0 [-]: transition inertial number of η_hard, App. A Eq. 11, Table II."),
+           real_spec("alpha_1", "-", 0.37, 0.0, 10.0,
+                     "α₁ [-]: rise of η_hard above η_s, App. A Eq. 11, Table II."),
+           real_spec("beta_1", "-", 1.5, 0.1, 10.0,
+                     "β₁ [-]: exponent of η_hard, App. A Eq. 11, Table II."),
+           real_spec("gamma_hat_0", "-", 0.1, 1e-9, 10.0,
+                     "γ̂_0 [-]: transition scaled shear rate of η_soft, App. A Eq. 12, Table II."),
+           real_spec("alpha_2", "-", 0.2, 0.0, 10.0,
+                     "α₂ [-]: softness drop of η, App. A Eq. 12, Table II."),
+           real_spec("beta_2", "-", 1.0, 0.1, 10.0,
+                     "β₂ [-]: exponent of η_soft, App. A Eq. 12, Table II."),
+           real_spec("onset_smoothing", "-", 1e-4, 0.0, 0.01,
+                     "x_s [-]: volume-fraction width over which |φ − φ_c|^{2/3} (App. A Eq. 8) is "
+                     "smoothed so that dP_s/dε_s is finite at φ_c.")},
+          ViscosityLimits::specs()}),
+     .make = [](const Coefficients& c) -> std::unique_ptr<SolidsStressModel> {
+       return std::make_unique<SteadyShear>(read_constants(c), ViscosityLimits::read(c));
+     }});
 }  // namespace
 
 }  // namespace bagnold::models::steady_shear

@@ -13,15 +13,15 @@ namespace bagnold::models::steady_shear {
 
 // App. A's μ-independent constants (Table II), deck-overridable.
 struct Constants {
-  double inertial = 0.021;                  // α_inert
-  double intermediate = 0.099;              // α_int
-  double transition_inertial_number = 0.32; // I_0
-  double hard_rise = 0.37;                  // α₁
-  double hard_exponent = 1.5;               // β₁
-  double transition_shear_rate = 0.1;       // γ̂_0
-  double soft_drop = 0.2;                   // α₂
-  double soft_exponent = 1.0;               // β₂
-  double onset_smoothing = 1e-4;            // x_s
+  double inertial = 0.021;                   // α_inert
+  double intermediate = 0.099;               // α_int
+  double transition_inertial_number = 0.32;  // I_0
+  double hard_rise = 0.37;                   // α₁
+  double hard_exponent = 1.5;                // β₁
+  double transition_shear_rate = 0.1;        // γ̂_0
+  double soft_drop = 0.2;                    // α₂
+  double soft_exponent = 1.0;                // β₂
+  double onset_smoothing = 1e-4;             // x_s
 };
 
 // The blended constants at friction μ: App. A Tables I–II, ε = 2/3, χ = 2 (Eqs. 8–10).
@@ -31,8 +31,7 @@ class SteadyShear final : public SolidsStressModel {
  public:
   SteadyShear(const Constants& constants, const ViscosityLimits& limits);
   std::string name() const override { return "steady-shear"; }
-  void evaluate(const Material& material, const SolidsState& in,
-                SolidsStress& out) const override;
+  void evaluate(const Material& material, const SolidsState& in, SolidsStress& out) const override;
   bool defines_temperature() const override { return false; }
 
  private:

@@ -94,41 +94,41 @@ Constants read_constants(const Coefficients& c) {
           .onset_smoothing = real_coefficient(c, "onset_smoothing")};
 }
 
-[[maybe_unused]] const bool registered = stress_registry().add({
-    .name = "steady-shear-cohesive",
-    .summary = "Cohesive blended rheology (Gu, Chialvo & Sundaresan 2014; App. D Eqs. 7–19)",
-    .coefficients = concatenate(
-        {{real_spec("phi_a", "-", 0.45, 0.0, 0.7,
-                    "φ_a [-]: cohesive pressure p d/k = α_coh,1 Bo* |φ − φ_a|/|φ_c − φ|, "
-                    "App. D Eq. 11, Table I."),
-          real_spec("alpha_inert", "-", 0.015, 0.0, 10.0,
-                    "α_inert [-]: inertial pressure α_inert γ̂²/|φ_c − φ|^χ, App. D Eq. 9, "
-                    "Table I."),
-          real_spec("alpha_coh_2", "-", 0.008, 0.0, 10.0,
-                    "α_coh,2 [-]: cohesive floor of the intermediate pressure α_coh,2 "
-                    "Bo*^{ε/(ε+χ)}, App. D Eq. 12, Table I."),
-          real_spec("i0", "-", 0.32, 1e-6, 10.0,
-                    "I_0 [-]: transition inertial number of η_hard, App. D Eq. 14, Table I."),
-          real_spec("alpha_1", "-", 0.37, 0.0, 10.0,
-                    "α₁ [-]: rise of η_hard above η_s, App. D Eq. 14, Table I."),
-          real_spec("beta_1", "-", 1.5, 0.1, 10.0,
-                    "β₁ [-]: exponent of η_hard, App. D Eq. 14, Table I."),
-          real_spec("gamma_hat_0", "-", 0.1, 1e-9, 10.0,
-                    "γ̂_0 [-]: transition scaled shear rate of η_soft, App. D Eq. 15, Table I."),
-          real_spec("alpha_2", "-", 0.2, 0.0, 10.0,
-                    "α₂ [-]: softness drop of η, App. D Eq. 15, Table I."),
-          real_spec("beta_2", "-", 1.0, 0.1, 10.0,
-                    "β₂ [-]: exponent of η_soft, App. D Eq. 15, Table I."),
-          real_spec("alpha_4", "-", 0.1, 1e-9, 10.0,
-                    "α₄ [-]: cohesive-to-inertial scaled shear rate α₄√Bo* in η, App. D Eq. 19, "
-                    "Table I."),
-          real_spec("onset_smoothing", "-", 1e-4, 0.0, 0.01,
-                    "x_s [-]: volume-fraction width over which |φ − φ_c|^ε (App. D Eq. 7) is "
-                    "smoothed so that dP_s/dε_s is finite at φ_c.")},
-         ViscosityLimits::specs()}),
-    .make = [](const Coefficients& c) -> std::unique_ptr<SolidsStressModel> {
-      return std::make_unique<SteadyShearCohesive>(read_constants(c), ViscosityLimits::read(c));
-    }});
+[[maybe_unused]] const bool registered = stress_registry().add(
+    {.name = "steady-shear-cohesive",
+     .summary = "Cohesive blended rheology (Gu, Chialvo & Sundaresan 2014; App. D Eqs. 7–19)",
+     .coefficients = concatenate(
+         {{real_spec("phi_a", "-", 0.45, 0.0, 0.7,
+                     "φ_a [-]: cohesive pressure p d/k = α_coh,1 Bo* |φ − φ_a|/|φ_c − φ|, "
+                     "App. D Eq. 11, Table I."),
+           real_spec("alpha_inert", "-", 0.015, 0.0, 10.0,
+                     "α_inert [-]: inertial pressure α_inert γ̂²/|φ_c − φ|^χ, App. D Eq. 9, "
+                     "Table I."),
+           real_spec("alpha_coh_2", "-", 0.008, 0.0, 10.0,
+                     "α_coh,2 [-]: cohesive floor of the intermediate pressure α_coh,2 "
+                     "Bo*^{ε/(ε+χ)}, App. D Eq. 12, Table I."),
+           real_spec("i0", "-", 0.32, 1e-6, 10.0,
+                     "I_0 [-]: transition inertial number of η_hard, App. D Eq. 14, Table I."),
+           real_spec("alpha_1", "-", 0.37, 0.0, 10.0,
+                     "α₁ [-]: rise of η_hard above η_s, App. D Eq. 14, Table I."),
+           real_spec("beta_1", "-", 1.5, 0.1, 10.0,
+                     "β₁ [-]: exponent of η_hard, App. D Eq. 14, Table I."),
+           real_spec("gamma_hat_0", "-", 0.1, 1e-9, 10.0,
+                     "γ̂_0 [-]: transition scaled shear rate of η_soft, App. D Eq. 15, Table I."),
+           real_spec("alpha_2", "-", 0.2, 0.0, 10.0,
+                     "α₂ [-]: softness drop of η, App. D Eq. 15, Table I."),
+           real_spec("beta_2", "-", 1.0, 0.1, 10.0,
+                     "β₂ [-]: exponent of η_soft, App. D Eq. 15, Table I."),
+           real_spec("alpha_4", "-", 0.1, 1e-9, 10.0,
+                     "α₄ [-]: cohesive-to-inertial scaled shear rate α₄√Bo* in η, App. D Eq. 19, "
+                     "Table I."),
+           real_spec("onset_smoothing", "-", 1e-4, 0.0, 0.01,
+                     "x_s [-]: volume-fraction width over which |φ − φ_c|^ε (App. D Eq. 7) is "
+                     "smoothed so that dP_s/dε_s is finite at φ_c.")},
+          ViscosityLimits::specs()}),
+     .make = [](const Coefficients& c) -> std::unique_ptr<SolidsStressModel> {
+       return std::make_unique<SteadyShearCohesive>(read_constants(c), ViscosityLimits::read(c));
+     }});
 }  // namespace
 
 }  // namespace bagnold::models::steady_shear_cohesive

@@ -24,13 +24,20 @@ std::vector<double> parse_list(const std::string& text) {
 }
 
 bool set_material(Material& m, const std::string& key, double value) {
-  if (key == "solids.diameter") m.diameter = value;
-  else if (key == "solids.density") m.density = value;
-  else if (key == "solids.restitution") m.restitution = value;
-  else if (key == "solids.friction") m.friction = value;
-  else if (key == "solids.stiffness") m.stiffness = value;
-  else if (key == "solids.bond_number") m.bond_number = value;
-  else return false;
+  if (key == "solids.diameter")
+    m.diameter = value;
+  else if (key == "solids.density")
+    m.density = value;
+  else if (key == "solids.restitution")
+    m.restitution = value;
+  else if (key == "solids.friction")
+    m.friction = value;
+  else if (key == "solids.stiffness")
+    m.stiffness = value;
+  else if (key == "solids.bond_number")
+    m.bond_number = value;
+  else
+    return false;
   return true;
 }
 }  // namespace
@@ -58,8 +65,10 @@ int main(int argc, char** argv) try {
       const double number = std::strtod(text.c_str(), &end);
       const bool is_number = end && *end == '\0' && !text.empty();
       if (is_number && set_material(material, key, number)) continue;
-      if (is_number) given[key] = number;
-      else given[key] = text;
+      if (is_number)
+        given[key] = number;
+      else
+        given[key] = text;
     } else {
       throw std::invalid_argument("unknown argument '" + flag + "'");
     }

@@ -1,12 +1,11 @@
 // Radial distribution functions at contact, App. B Eqs. 11, 12, 31: closed forms, divergence
 // exponents, and Dual derivatives against finite differences.
-#include "models/rdf/radial_distribution.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "models/dual.hpp"
+#include "models/rdf/radial_distribution.hpp"
 #include "tests/unit/models/probe.hpp"
 
 namespace bagnold::tests {
@@ -50,11 +49,11 @@ TEST(RadialDistribution, ChialvoSundaresanDivergesWithExponentMinusThreeHalves) 
 TEST(RadialDistribution, DualDerivativesMatchFiniteDifferences) {
   const double phi_c = 0.596;
   for (const double phi : {0.05, 0.3, 0.45, 0.52, 0.58, 0.59}) {
-    for (const auto kind : {rdf::Kind::carnahan_starling, rdf::Kind::torquato,
-                            rdf::Kind::chialvo_sundaresan}) {
+    for (const auto kind :
+         {rdf::Kind::carnahan_starling, rdf::Kind::torquato, rdf::Kind::chialvo_sundaresan}) {
       const double h = 1e-7;
-      const double fd = (rdf::evaluate(kind, phi + h, phi_c) - rdf::evaluate(kind, phi - h, phi_c)) /
-                        (2 * h);
+      const double fd =
+          (rdf::evaluate(kind, phi + h, phi_c) - rdf::evaluate(kind, phi - h, phi_c)) / (2 * h);
       const double exact = rdf::evaluate(kind, Dual::variable(phi), phi_c).slope;
       // Central difference with h = 1e-7: truncation ~h² g''' and rounding ~1e-16 g/h; 1e-6
       // relative covers both for these smooth functions away from φ_f.

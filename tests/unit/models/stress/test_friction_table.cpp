@@ -1,8 +1,8 @@
 // Friction-dependent constants: tabulated values, the piecewise-linear rule between them, and
 // clamping outside the table (models/stress/friction_table.hpp).
-#include "models/stress/friction_table.hpp"
-
 #include <gtest/gtest.h>
+
+#include "models/stress/friction_table.hpp"
 
 namespace bagnold::tests {
 namespace chialvo2012 = models::chialvo2012;

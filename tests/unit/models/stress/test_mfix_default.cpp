@@ -1,12 +1,11 @@
 // MFIX default (Lun et al. + Schaeffer + plastic pressure): the algebraic energy balance, the
 // plastic branch, derivatives.
-#include "models/stress/mfix_default.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 
+#include "models/stress/mfix_default.hpp"
 #include "tests/unit/models/gd_reference.hpp"
 #include "tests/unit/models/probe.hpp"
 

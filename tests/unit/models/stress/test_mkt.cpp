@@ -1,13 +1,12 @@
 // Modified kinetic theory (App. B Tables I–II): the report's own statements, the corrected
 // Eq. 51, the at/above-φ_c treatment, derivatives and finiteness.
-#include "models/stress/mkt.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "models/rdf/radial_distribution.hpp"
 #include "models/stress/friction_table.hpp"
+#include "models/stress/mkt.hpp"
 #include "models/stress/rheometer.hpp"
 #include "tests/unit/models/gd_reference.hpp"
 #include "tests/unit/models/probe.hpp"
@@ -86,8 +85,8 @@ TEST(Mkt, CorrectedDissipationFactorBalancesProductionAtAlgebraicTemperature) {
 
 TEST(Mkt, StressRatioTendsToYieldStressRatioAtCriticalFraction) {
   // App. B Sec. IV.C.3: η = η_s χ_s + B I′ → η_s(μ) as φ → φ_c (I′ → 0, χ → 0).
-  const models::Coefficients at_the_edge{{"jamming_margin", 1e-9}, {"min_strain_rate", 0.0},
-                                         {"max_viscosity", 1e12}};
+  const models::Coefficients at_the_edge{
+      {"jamming_margin", 1e-9}, {"min_strain_rate", 0.0}, {"max_viscosity", 1e12}};
   const auto model = make_model("mkt", at_the_edge);
   for (const double mu : {0.1, 0.5}) {
     const Material m = glass(mu, 0.8);
@@ -117,9 +116,8 @@ TEST(Mkt, DenseRegimeScalingsHaveTheReportedExponents) {
   const double g0_slope =
       log_log_slope(1e-5, near.radial_distribution, 1e-4, far.radial_distribution);
   const double t_slope = log_log_slope(1e-5, near.temperature_factor, 1e-4, far.temperature_factor);
-  const double p_slope =
-      log_log_slope(1e-5, near.pressure_factor * near.temperature_factor, 1e-4,
-                    far.pressure_factor * far.temperature_factor);
+  const double p_slope = log_log_slope(1e-5, near.pressure_factor * near.temperature_factor, 1e-4,
+                                       far.pressure_factor * far.temperature_factor);
   EXPECT_NEAR(g0_slope, -1.5, 1e-3) << g0_slope;
   EXPECT_NEAR(t_slope, -0.5, 1e-3) << t_slope;
   EXPECT_NEAR(p_slope, -2.0, 1e-3) << p_slope;
@@ -155,8 +153,7 @@ TEST(Mkt, PressureStaysStiffAndFiniteAtAndAboveCriticalFraction) {
   // Far from onset it is Eq. 8's power law: at x = 0.05, α_QS(0.3) (k/d) 0.05^{2/3}, to the
   // smoothing's relative error (1 − n/2)(x_s/x)² ≈ 3e-6.
   const auto at_rest = probe(*model, m, onset + 0.05, 0.0);
-  EXPECT_NEAR(at_rest.pressure, 0.14 * 1e8 * std::pow(0.05, 2.0 / 3.0),
-              1e-5 * at_rest.pressure);
+  EXPECT_NEAR(at_rest.pressure, 0.14 * 1e8 * std::pow(0.05, 2.0 / 3.0), 1e-5 * at_rest.pressure);
   // At rest the shear viscosity is the regularized yield stress η_s P/γ̇_min, capped.
   EXPECT_DOUBLE_EQ(at_rest.shear_viscosity, 1e5);
 }

@@ -1,12 +1,11 @@
 // The rheometer core: simple-shear evaluation and the CSV format `bagnold rheometer` prints.
-#include "models/stress/rheometer.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 #include <sstream>
 
+#include "models/stress/rheometer.hpp"
 #include "tests/unit/models/probe.hpp"
 
 namespace bagnold::tests {
@@ -27,8 +26,8 @@ TEST(Rheometer, RowHoldsPressureStressRatioAndInertialNumber) {
 TEST(Rheometer, UndefinedQuantitiesAreNaN) {
   Material m;
   // No temperature in the rheology models; no stress ratio or I without pressure.
-  EXPECT_TRUE(std::isnan(models::shear_rheometer(*make_model("steady-shear"), m, 0.5, 1.0)
-                             .granular_temperature));
+  EXPECT_TRUE(std::isnan(
+      models::shear_rheometer(*make_model("steady-shear"), m, 0.5, 1.0).granular_temperature));
   const auto at_rest = models::shear_rheometer(*make_model("mkt"), m, 0.3, 0.0);
   EXPECT_EQ(at_rest.pressure, 0.0);
   EXPECT_TRUE(std::isnan(at_rest.stress_ratio));
@@ -36,8 +35,8 @@ TEST(Rheometer, UndefinedQuantitiesAreNaN) {
 }
 
 TEST(Rheometer, GridIsPhiMajor) {
-  const auto rows = models::shear_rheometer(*make_model("mkt"), Material{}, {0.1, 0.2},
-                                            {1.0, 2.0, 3.0});
+  const auto rows =
+      models::shear_rheometer(*make_model("mkt"), Material{}, {0.1, 0.2}, {1.0, 2.0, 3.0});
   ASSERT_EQ(rows.size(), 6u);
   EXPECT_EQ(rows[2].phi, 0.1);
   EXPECT_EQ(rows[2].shear_rate, 3.0);

@@ -1,7 +1,5 @@
 // Standard kinetic theory (App. B Eqs. 1–18): Garzó–Dufty steady shear, radial-distribution
 // choices, derivatives and the dense limit.
-#include "models/stress/skt.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,6 +7,7 @@
 
 #include "models/stress/friction_table.hpp"
 #include "models/stress/rheometer.hpp"
+#include "models/stress/skt.hpp"
 #include "tests/unit/models/gd_reference.hpp"
 #include "tests/unit/models/probe.hpp"
 
@@ -40,8 +39,8 @@ TEST(Skt, SteadyShearIsGarzoDuftyEquations15To18) {
 TEST(Skt, MktRadialDistributionSharesMktJammingPoint) {
   // With radial_distribution = mkt, SKT's pressure diverges at φ_c(μ) like MKT's g0
   // (p/ρ_s(γ̇d)² = JH/K ~ g0 in the dense limit: exponent −3/2 from Eq. 31).
-  const auto model = make_model(
-      "skt", {{"radial_distribution", std::string("mkt")}, {"jamming_margin", 1e-9}});
+  const auto model =
+      make_model("skt", {{"radial_distribution", std::string("mkt")}, {"jamming_margin", 1e-9}});
   Material m;
   m.friction = 0.5;
   const double phi_c = models::chialvo2012::critical_fraction(0.5);
@@ -68,7 +67,8 @@ TEST(Skt, TemperatureFollowsTheDeviatoricShearRate) {
   const auto model = make_model("skt");
   Material m;
   const double strain_rate = 5.0, divergence = 3.0;
-  const double deviatoric = std::sqrt(strain_rate * strain_rate - 2.0 / 3.0 * divergence * divergence);
+  const double deviatoric =
+      std::sqrt(strain_rate * strain_rate - 2.0 / 3.0 * divergence * divergence);
   const auto compressed = probe(*model, m, 0.3, strain_rate, divergence);
   const auto sheared = probe(*model, m, 0.3, deviatoric, 0.0);
   EXPECT_NEAR(compressed.granular_temperature, sheared.granular_temperature,

@@ -1,14 +1,13 @@
 // Every registered stress model: the registry lists exactly what we ship, unknown names list
 // the alternatives, coefficient declarations are complete, and outputs are finite over the
 // whole state range the solver can visit.
-#include "models/stress/solids_stress.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <string>
 #include <vector>
 
+#include "models/stress/solids_stress.hpp"
 #include "tests/unit/models/probe.hpp"
 
 namespace bagnold::tests {
@@ -80,10 +79,10 @@ TEST(SolidsStress, EveryModelIsFiniteOverTheWholeStateRange) {
         models::SolidsStress out{p, dp, mu, lambda, temperature};
         model->evaluate(m, in, out);
         for (std::size_t k = 0; k < n; ++k) {
-          const std::string where = name + " μ=" + std::to_string(friction) +
-                                    " Bo*=" + std::to_string(bond) + " φ=" + std::to_string(phi[k]) +
-                                    " γ̇=" + std::to_string(rate[k]) +
-                                    " trD=" + std::to_string(divergence[k]);
+          const std::string where =
+              name + " μ=" + std::to_string(friction) + " Bo*=" + std::to_string(bond) +
+              " φ=" + std::to_string(phi[k]) + " γ̇=" + std::to_string(rate[k]) +
+              " trD=" + std::to_string(divergence[k]);
           ASSERT_TRUE(std::isfinite(p[k]) && p[k] >= 0.0) << where << " P=" << p[k];
           ASSERT_TRUE(std::isfinite(dp[k])) << where << " dP=" << dp[k];
           ASSERT_TRUE(std::isfinite(mu[k]) && mu[k] >= 0.0) << where << " μ_s=" << mu[k];

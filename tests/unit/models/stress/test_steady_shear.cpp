@@ -1,13 +1,12 @@
 // Steady-shear rheology (App. A Eqs. 7–15): p at φ_c, regime slopes in γ̇, stress ratio,
 // derivatives.
-#include "models/stress/steady_shear.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "models/stress/friction_table.hpp"
 #include "models/stress/rheometer.hpp"
+#include "models/stress/steady_shear.hpp"
 #include "tests/unit/models/probe.hpp"
 
 namespace bagnold::tests {
@@ -44,8 +43,7 @@ TEST(SteadyShear, PressureAtCriticalFractionIsIntermediatePressure) {
     const Material m = sand(mu);
     const double phi_c = models::chialvo2012::critical_fraction(mu);
     for (const double g : {1e-7, 1e-4, 1e-1})
-      EXPECT_NEAR(scaled_pressure(*model, m, phi_c, g), 0.099 * std::sqrt(g),
-                  1e-12 * std::sqrt(g));
+      EXPECT_NEAR(scaled_pressure(*model, m, phi_c, g), 0.099 * std::sqrt(g), 1e-12 * std::sqrt(g));
   }
 }
 
@@ -63,7 +61,8 @@ TEST(SteadyShear, ThreeRegimesHaveSlopesZeroHalfAndTwo) {
   EXPECT_NEAR(quasi_static, 0.0, 1e-3);  // p_int/p_QS < 1e-4 here
   EXPECT_NEAR(inertial, 2.0, 1e-3);      // p_inert/p_int < 1e-4 here
   EXPECT_NEAR(critical, 0.5, 1e-12);     // exact: p = p_int at φ_c
-  EXPECT_NEAR(fast_dilute, 0.5, 2e-3);   // slope = 1/2 + (3/2) p_int/(p_int + p_inert), p_int/p_inert < 5e-4
+  EXPECT_NEAR(fast_dilute, 0.5,
+              2e-3);  // slope = 1/2 + (3/2) p_int/(p_int + p_inert), p_int/p_inert < 5e-4
   RecordProperty("slope_quasi_static", std::to_string(quasi_static));
   RecordProperty("slope_inertial", std::to_string(inertial));
   RecordProperty("slope_critical", std::to_string(critical));
@@ -76,7 +75,8 @@ TEST(SteadyShear, StressRatioIsHardMinusSoftAndYieldsAtEtaS) {
   const blended::Constants c = models::steady_shear::constants_at(0.3, {});
   EXPECT_NEAR(blended::hard_stress_ratio(0.32, c), 0.357 + 0.37 / 2, 1e-15);
   EXPECT_NEAR(blended::soft_stress_ratio(0.1, c), 0.1, 1e-15);
-  const auto model = make_model("steady-shear", {{"min_strain_rate", 0.0}, {"max_viscosity", 1e12}});
+  const auto model =
+      make_model("steady-shear", {{"min_strain_rate", 0.0}, {"max_viscosity", 1e12}});
   const Material m = sand(0.3);
   const auto row = models::shear_rheometer(*model, m, 0.62, rate_for(1e-9, m));
   EXPECT_NEAR(row.stress_ratio, 0.357, 1e-3);  // η_hard − η_s ≈ α₁(I/I_0)^1.5 ≈ 1e-6 here

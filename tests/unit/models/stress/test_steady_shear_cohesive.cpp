@@ -1,12 +1,11 @@
 // Cohesive steady-shear rheology (App. D Eqs. 7–19): the cohesive regime, App. D's own
 // non-cohesive limit, the μ interpolation of its Table I.
-#include "models/stress/steady_shear_cohesive.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "models/stress/rheometer.hpp"
+#include "models/stress/steady_shear_cohesive.hpp"
 #include "tests/unit/models/probe.hpp"
 
 namespace bagnold::tests {
@@ -61,14 +60,14 @@ TEST(SteadyShearCohesive, CohesionAddsARateIndependentRegimeBelowCriticalFractio
 TEST(SteadyShearCohesive, CohesionRaisesTheStressRatioOnlyAtLowShearRate) {
   // App. D Sec. V, Eq. 19: η − η* = α₃ φ Bo* (k/d)/p · 1/(γ̂/(α₄√Bo*) + 1) > 0, fading for
   // γ̂ ≫ α₄√Bo*.
-  const auto model = make_model("steady-shear-cohesive",
-                                {{"min_strain_rate", 0.0}, {"max_viscosity", 1e12}});
+  const auto model =
+      make_model("steady-shear-cohesive", {{"min_strain_rate", 0.0}, {"max_viscosity", 1e12}});
   const Material cohesive = powder(5e-5);
   const double slow = rate_for(1e-7, cohesive), fast = rate_for(1e-1, cohesive);
   const auto slow_row = models::shear_rheometer(*model, cohesive, 0.58, slow);
-  const double expected_excess =
-      0.23 * 0.58 * 5e-5 / (slow_row.pressure * cohesive.diameter / cohesive.stiffness) /
-      (1e-7 / (0.1 * std::sqrt(5e-5)) + 1.0);
+  const double expected_excess = 0.23 * 0.58 * 5e-5 /
+                                 (slow_row.pressure * cohesive.diameter / cohesive.stiffness) /
+                                 (1e-7 / (0.1 * std::sqrt(5e-5)) + 1.0);
   const double eta_star = slow_row.stress_ratio - expected_excess;
   EXPECT_GT(expected_excess, 0.1);
   EXPECT_NEAR(eta_star, 0.268, 1e-3);  // η* → η_s(0.1) at I, γ̂ → 0

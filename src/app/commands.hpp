@@ -11,6 +11,15 @@ struct DeckArguments {
   std::vector<std::string> overrides;  // --set key=value
 };
 
+struct RheometerArguments {
+  std::string model;
+  std::vector<double> phis;         // solids volume fractions [-]
+  std::vector<double> shear_rates;  // [1/s]
+  std::string deck;                 // optional: material and model constants from a deck
+  std::vector<std::string> overrides;
+};
+
+int rheometer_command(const RheometerArguments& args);
 int check_command(const DeckArguments& args);
 int run_command(const DeckArguments& args);
 int info_command();

@@ -1,4 +1,4 @@
-// bagnold: the command-line program. Subcommands: run, check, info, keys.
+// bagnold: the command-line program. Subcommands: run, check, rheometer, info, keys.
 #include <CLI/CLI.hpp>
 
 #include "src/app/commands.hpp"
@@ -26,6 +26,18 @@ int main(int argc, char** argv) {
       "check", "Validate a deck without running; print the resolved configuration and geometry");
   add_deck_options(check);
   auto* info = cli.add_subcommand("info", "Version, build, MPI, PETSc, HDF5 and available models");
+  RheometerArguments rheo;
+  auto* rheometer = cli.add_subcommand(
+      "rheometer", "Evaluate a solids-stress model under steady simple shear; CSV on stdout");
+  rheometer->add_option("--model", rheo.model, "Model name (see bagnold info)")->required();
+  rheometer->add_option("--phi", rheo.phis, "Solids volume fractions, e.g. 0.5,0.55,0.58")
+      ->required()->delimiter(',');
+  rheometer->add_option("--shear-rate", rheo.shear_rates, "Shear rates [1/s], e.g. 1,10,100")
+      ->required()->delimiter(',');
+  rheometer->add_option("--deck", rheo.deck, "Take material and model constants from a deck");
+  rheometer->add_option("--set", rheo.overrides,
+                        "Material or model key, e.g. --set solids.friction=0.5 (repeatable)")
+      ->allow_extra_args(false);
   auto* keys = cli.add_subcommand("keys", "Print the deck key reference (Markdown, docs/deck.md)");
 
   try {
@@ -39,6 +51,7 @@ int main(int argc, char** argv) {
   if (run->parsed()) return run_command(deck_args);
   if (check->parsed()) return check_command(deck_args);
   if (info->parsed()) return info_command();
+  if (rheometer->parsed()) return rheometer_command(rheo);
   if (keys->parsed()) return keys_command();
   return bad_input;
 }

@@ -338,14 +338,15 @@ std::optional<toml::table> parse(const std::string& text, const std::string& sou
 std::string read_file(const std::string& path);
 
 // Overlays `top` on `base`: tables merge key by key, anything else (values, arrays, arrays of
-// tables) replaces what the base had.
-void overlay(toml::table& base, const toml::table& top) {
-  for (const auto& [k, node] : top) {
+// tables) replaces what the base had. Nodes are moved, not copied: toml++ keeps a node's source
+// position on a move only, and errors in the extending deck must name its file and line.
+void overlay(toml::table& base, toml::table&& top) {
+  for (auto&& [k, node] : top) {
     auto* existing = base.get(k.str());
     if (existing && existing->is_table() && node.is_table()) {
-      overlay(*existing->as_table(), *node.as_table());
+      overlay(*existing->as_table(), std::move(*node.as_table()));
     } else {
-      base.insert_or_assign(k.str(), node);
+      base.insert_or_assign(k, std::move(node));
     }
   }
 }
@@ -385,7 +386,7 @@ std::optional<toml::table> resolve_extends(toml::table deck, const std::string& 
   auto resolved_base = resolve_extends(std::move(base), base_path, diag, depth + 1);
   if (!resolved_base) return std::nullopt;
   deck.erase("extends");
-  overlay(*resolved_base, deck);
+  overlay(*resolved_base, std::move(deck));
   return resolved_base;
 }
 

@@ -1,6 +1,7 @@
 #include "src/deck/schema.hpp"
 
 #include <cstdio>
+#include <cstdlib>
 
 #include "src/util/closest_match.hpp"
 
@@ -11,6 +12,9 @@ std::string to_toml_text(double value) {
   if (std::isnan(value)) return "nan";
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.10g", value);
+  // Ten digits read well; when they do not give the value back, all 17 (the resolved deck must
+  // load back to the same values).
+  if (std::strtod(buffer, nullptr) != value) std::snprintf(buffer, sizeof buffer, "%.17g", value);
   std::string s = buffer;
   // Keep it a TOML float: 1 -> 1.0, 1e-05 stays.
   if (s.find_first_of(".eEn") == std::string::npos) s += ".0";
@@ -21,8 +25,19 @@ std::string to_toml_text(bool value) { return value ? "true" : "false"; }
 std::string to_toml_text(const std::string& value) {
   std::string out = "\"";
   for (char c : value) {
-    if (c == '"' || c == '\\') out += '\\';
-    out += c;
+    const auto u = static_cast<unsigned char>(c);
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += c;
+    } else if (c == '\n') {
+      out += "\\n";
+    } else if ((u < 0x20 && c != '\t') || u == 0x7f) {  // TOML forbids raw control characters
+      char escaped[8];
+      std::snprintf(escaped, sizeof escaped, "\\u%04x", static_cast<unsigned>(u));
+      out += escaped;
+    } else {
+      out += c;
+    }
   }
   return out + "\"";
 }

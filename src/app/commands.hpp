@@ -9,6 +9,7 @@ namespace bagnold::app {
 struct DeckArguments {
   std::string deck;
   std::vector<std::string> overrides;  // --set key=value
+  std::string petsc_options;           // --petsc-options "-log_view ..."
 };
 
 struct RheometerArguments {

@@ -22,6 +22,8 @@ int main(int argc, char** argv) {
   };
   auto* run = cli.add_subcommand("run", "Run the simulation a deck describes");
   add_deck_options(run);
+  run->add_option("--petsc-options", deck_args.petsc_options,
+                  "PETSc options, e.g. \"-log_view -pressure_ksp_monitor\"");
   auto* check = cli.add_subcommand(
       "check", "Validate a deck without running; print the resolved configuration and geometry");
   add_deck_options(check);

@@ -14,7 +14,7 @@ namespace {
 
 const std::vector<std::string> top_level_sections = {
     "extends", "run", "physics", "grid", "geometry", "boundary", "gas", "solids", "models", "initial",
-    "output"};
+    "numerics", "output"};
 
 toml::source_region no_source(const std::string& file) {
   toml::source_region r;
@@ -320,6 +320,8 @@ void read_all(const toml::table& root, Deck& deck, Diagnostics& diag) {
   read_section(subtable(root, "gas", "gas", diag), gas_section(), "gas", deck.gas, diag);
   read_material_and_models(root, deck, diag);
   deck.initial = read_array_of_tables(root, "initial", "initial", initial_section(), diag);
+  read_section(subtable(root, "numerics", "numerics", diag), numerics_section(), "numerics",
+               deck.numerics, diag);
   read_section(subtable(root, "output", "output", diag), output_section(), "output", deck.output,
                diag, root.source());
   check_run(root, deck, diag);
@@ -476,6 +478,7 @@ std::string resolved_text(const Deck& d) {
   s << "\n[models.solids_stress." << d.models.solids_stress.name << "]\n"
     << show_coefficients(d.models.solids_stress.coefficients);
   for (const auto& r : d.initial) s << "\n[[initial]]\n" << show_section(initial_section(), r);
+  s << "\n[numerics]\n" << show_section(numerics_section(), d.numerics);
   s << "\n[output]\n" << show_section(output_section(), d.output);
   return s.str();
 }
@@ -546,6 +549,7 @@ std::string key_reference_markdown() {
     reference_table(s, "`[models.solids_stress." + entry.name + "]` — " + entry.summary, keys);
   }
   reference_section(s, initial_section(), "`[[initial]]`");
+  reference_section(s, numerics_section(), "`[numerics]`");
   reference_section(s, output_section(), "`[output]`");
   return s.str();
 }

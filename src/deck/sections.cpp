@@ -182,6 +182,34 @@ const Section<InitialRegion>& initial_section() {
   return s;
 }
 
+const Section<Numerics>& numerics_section() {
+  static const Section<Numerics> s{"numerics", "Discretization and solver controls", {
+      key(&Numerics::convection, "convection").init("superbee")
+          .one_of({"upwind", "superbee", "muscl", "van_leer", "minmod"})
+          .doc("Convection scheme: first-order upwind, or a TVD limiter by deferred correction."),
+      key(&Numerics::tolerance, "tolerance").unit("-").init(1e-4).within(1e-12, 1.0)
+          .doc("A step has converged when every normalized residual is below this."),
+      key(&Numerics::max_outer_iterations, "max_outer_iterations").init(40).within(1, 1000)
+          .doc("SIMPLE outer iterations before the step is redone with dt / 2."),
+      key(&Numerics::easy_outer_iterations, "easy_outer_iterations").init(8).within(1, 1000)
+          .doc("A step converged in at most this many iterations lets dt grow."),
+      key(&Numerics::dt_growth, "dt_growth").unit("-").init(1.2).within(1.0, 2.0)
+          .doc("Factor by which dt grows after an easy step (up to run.dt_max)."),
+      key(&Numerics::relax_velocity, "relax_velocity").unit("-").init(0.7).within(0.05, 1.0)
+          .doc("Under-relaxation of the momentum equations, α_u."),
+      key(&Numerics::relax_pressure, "relax_pressure").unit("-").init(0.3).within(0.01, 1.0)
+          .doc("Under-relaxation of the pressure correction, α_p."),
+      key(&Numerics::pressure_preconditioner, "pressure_preconditioner").init("gamg")
+          .one_of({"gamg", "hypre"})
+          .doc("Algebraic multigrid for the pressure correction (PETSc GAMG or hypre BoomerAMG)."),
+      key(&Numerics::pressure_tolerance, "pressure_tolerance").unit("-").init(1e-4)
+          .within(1e-14, 0.5).doc("Relative tolerance of the pressure-correction solve."),
+      key(&Numerics::momentum_tolerance, "momentum_tolerance").unit("-").init(1e-4)
+          .within(1e-14, 0.5).doc("Relative tolerance of the momentum solves."),
+  }};
+  return s;
+}
+
 const Section<Output>& output_section() {
   static const Section<Output> s{"output", "Output", {
       key(&Output::directory, "directory").required()

@@ -18,6 +18,7 @@ class OutputWriter {
   // Collective. Throws io::Hdf5Error with the directory's name if it cannot be created or written.
   OutputWriter(const deck::Deck& deck, const parallel::Domain& domain);
 
+  double next_snapshot_time() const { return m_next_time; }
   bool snapshot_due(double time) const { return time >= m_next_time - 1e-12 * (1.0 + time); }
   // Collective: writes a snapshot of `state` and updates the index; returns its path.
   std::string write(const FlowState& state, double time, long step, double dt);

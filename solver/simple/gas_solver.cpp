@@ -1,0 +1,87 @@
+#include "solver/simple/gas_solver.hpp"
+
+#include <algorithm>
+
+namespace bagnold::solver {
+
+double Residuals::largest() const {
+  return std::max({momentum[0], momentum[1], momentum[2], continuity});
+}
+
+GasSolver::GasSolver(const deck::Deck& deck, const parallel::Domain& domain)
+    : m_deck(deck),
+      m_domain(domain),
+      m_faces(deck, domain),
+      m_limiter(limiter_from_name(deck.numerics.convection)) {
+  const auto& layout = domain.layout;
+  const auto local = static_cast<std::size_t>(layout.local_count());
+  m_width.resize(3 * local);
+  for (std::size_t l = 0; l < local; ++l) {
+    const auto ijk = layout.index3(static_cast<int>(l));
+    for (int d = 0; d < 3; ++d)
+      m_width[3 * l + static_cast<std::size_t>(d)] = domain.grid.axis(d).width(ijk[static_cast<std::size_t>(d)]);
+  }
+  const MPI_Comm comm = layout.comm().get();
+  KrylovSettings momentum;
+  momentum.ksp_type = "bcgs";
+  momentum.pc_type = "bjacobi";
+  momentum.relative_tolerance = deck.numerics.momentum_tolerance;
+  const char* prefixes[] = {"momentum_x_", "momentum_y_", "momentum_z_"};
+  for (int d = 0; d < 3; ++d) {
+    const auto& kind = m_faces.kind[static_cast<std::size_t>(d)];
+    m_velocity_numbering[static_cast<std::size_t>(d)] = std::make_unique<UnknownNumbering>(
+        layout, [&](int l) { return kind[static_cast<std::size_t>(l)] == FaceClass::unknown; });
+    const auto& n = *m_velocity_numbering[static_cast<std::size_t>(d)];
+    m_momentum_system[static_cast<std::size_t>(d)] =
+        std::make_unique<LinearSystem>(comm, n.owned_rows(), n.first_row, prefixes[d], momentum);
+    m_d[static_cast<std::size_t>(d)].assign(local, 0.0);
+  }
+  m_pressure_numbering = std::make_unique<UnknownNumbering>(
+      layout, [&](int l) { return layout.kind(l) == grid::CellKind::fluid; });
+  KrylovSettings pressure;
+  pressure.ksp_type = "cg";
+  pressure.pc_type = deck.numerics.pressure_preconditioner;
+  pressure.relative_tolerance = deck.numerics.pressure_tolerance;
+  pressure.constant_null_space = !m_faces.has_pressure_boundary;
+  m_pressure_system = std::make_unique<LinearSystem>(
+      comm, m_pressure_numbering->owned_rows(), m_pressure_numbering->first_row, "pressure_", pressure);
+}
+
+double GasSolver::face_area(int local, int d) const {
+  return width(local, (d + 1) % 3) * width(local, (d + 2) % 3);
+}
+
+void GasSolver::apply_boundary_values(run::FlowState& state) const {
+  const auto local = static_cast<std::size_t>(m_domain.layout.local_count());
+  for (int d = 0; d < 3; ++d) {
+    auto& u = state.gas_velocity[static_cast<std::size_t>(d)];
+    const auto& kind = m_faces.kind[static_cast<std::size_t>(d)];
+    for (std::size_t l = 0; l < local; ++l) {
+      if (kind[l] == FaceClass::fixed) u[l] = m_faces.fixed_value[static_cast<std::size_t>(d)][l];
+      if (kind[l] == FaceClass::none) u[l] = 0.0;
+    }
+  }
+  for (std::size_t l = 0; l < local; ++l)
+    if (m_faces.pressure_boundary[l]) state.gas_pressure[l] = m_faces.boundary_pressure[l];
+}
+
+std::vector<double> GasSolver::boundary_mass_flux(const run::FlowState& state) const {
+  const auto& layout = m_domain.layout;
+  std::vector<double> flux(m_domain.regions.regions.size(), 0.0);
+  const double rho = m_deck.gas.density;
+  // Each boundary face is counted by the rank owning its fluid cell.
+  for (int l = 0; l < layout.owned_fluid_count(); ++l) {
+    for (int face = 0; face < 6; ++face) {
+      const int m = layout.neighbour(l, face);
+      if (m < 0 || layout.kind(m) != grid::CellKind::boundary) continue;
+      const int d = parallel::face_direction(face);
+      const int owner = parallel::face_sign(face) > 0 ? l : m;
+      const double u = state.gas_velocity[static_cast<std::size_t>(d)][static_cast<std::size_t>(owner)];
+      flux[static_cast<std::size_t>(layout.region(m))] += parallel::face_sign(face) * rho * u * face_area(l, d);
+    }
+  }
+  layout.comm().sum_in_place(flux);
+  return flux;
+}
+
+}  // namespace bagnold::solver

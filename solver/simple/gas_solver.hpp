@@ -1,0 +1,72 @@
+#pragma once
+// The single-phase incompressible gas solver on the staggered grid: SIMPLE outer iterations
+// within an implicit-Euler time step (DESIGN.md, "Equations and algorithm", steps 2, 3 and 5
+// without the solids). The two-fluid solver extends it with volume fractions and drag.
+//
+// One time step (advance.cpp):
+//   repeat until every normalized residual < numerics.tolerance:
+//     1. momentum predictor for U, V, W (momentum_predictor.cpp): upwind implicit, TVD by
+//        deferred correction, central diffusion, under-relaxed; gives u* and d = A / a_P;
+//     2. pressure correction (pressure_correction.cpp): Σ_faces ρ A d (p'_P − p'_nb) = −Σ ρ A u*,
+//        solved with CG + algebraic multigrid; P += α_p p', u = u* + d (p'_P − p'_N).
+
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "solver/convection_limiter.hpp"
+#include "solver/petsc/linear_system.hpp"
+#include "solver/unknown_numbering.hpp"
+#include "solver/velocity_faces.hpp"
+#include "src/deck/deck.hpp"
+#include "src/parallel/domain.hpp"
+#include "src/run/flow_state.hpp"
+
+namespace bagnold::solver {
+
+struct Residuals {
+  std::array<double, 3> momentum{0, 0, 0};  // normalized, per direction
+  double continuity = 0.0;                  // normalized mass imbalance
+  double largest() const;
+};
+
+struct StepResult {
+  bool converged = false;
+  int iterations = 0;
+  Residuals residuals;
+};
+
+class GasSolver {
+ public:
+  GasSolver(const deck::Deck& deck, const parallel::Domain& domain);
+
+  // Sets the boundary values every stencil reads: given face velocities, boundary pressures.
+  void apply_boundary_values(run::FlowState& state) const;
+  // Advances `state` (holding the last iterate, initially `old`) by one time step dt.
+  StepResult advance(run::FlowState& state, const run::FlowState& old, double dt);
+
+  // Net mass flux [kg/s] out through each boundary region (monitor).
+  std::vector<double> boundary_mass_flux(const run::FlowState& state) const;
+
+ private:
+  // Step 1: assembles and solves one momentum component; returns its normalized residual.
+  double predict_momentum(int d, run::FlowState& state, const run::FlowState& old, double dt);
+  // Step 2: solves the pressure correction, corrects P and u; returns the continuity residual.
+  double correct_pressure(run::FlowState& state);
+
+  double width(int local, int d) const { return m_width[static_cast<std::size_t>(local) * 3 + static_cast<std::size_t>(d)]; }
+  double face_area(int local, int d) const;  // area of the cell's face normal to d
+
+  const deck::Deck& m_deck;
+  const parallel::Domain& m_domain;
+  VelocityFaces m_faces;
+  Limiter m_limiter;
+  std::vector<double> m_width;  // 3 per local cell
+  std::array<std::unique_ptr<UnknownNumbering>, 3> m_velocity_numbering;
+  std::unique_ptr<UnknownNumbering> m_pressure_numbering;
+  std::array<std::unique_ptr<LinearSystem>, 3> m_momentum_system;
+  std::unique_ptr<LinearSystem> m_pressure_system;
+  std::array<std::vector<double>, 3> m_d;  // d = A / a_P (relaxed) of each unknown face velocity
+};
+
+}  // namespace bagnold::solver

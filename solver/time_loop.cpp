@@ -1,0 +1,78 @@
+#include "solver/time_loop.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+
+#include "src/run/monitor_columns.hpp"
+
+namespace bagnold::solver {
+
+std::vector<double> monitor_row(const TimeLoopContext& context, const GasSolver& solver,
+                                const run::FlowState& state, double dt, const StepResult& step) {
+  const auto inventory = run::phase_inventory(context.deck, context.domain, state);
+  std::vector<double> row = {dt, static_cast<double>(step.iterations), step.residuals.largest(),
+                             inventory.gas, inventory.solids};
+  const auto gas_flux = solver.boundary_mass_flux(state);
+  for (const double f : gas_flux) {
+    row.push_back(f);
+    row.push_back(0.0);  // solids flux: the two-fluid solver (issue 4)
+  }
+  return row;
+}
+
+RunSummary run_time_loop(const TimeLoopContext& context, GasSolver& solver, run::FlowState& state,
+                         double start_time, long start_step) {
+  const auto& run = context.deck.run;
+  const auto& numerics = context.deck.numerics;
+  RunSummary summary;
+  double time = start_time;
+  long step = start_step;
+  double dt = run.dt_initial;
+  run::FlowState old = state;
+  const double end = run.end_time;
+  const double tiny = 1e-12 * std::max(1.0, end);
+
+  while (time < end - tiny) {
+    double dt_try = std::min(dt, end - time);
+    const double to_snapshot = context.output.next_snapshot_time() - time;
+    if (to_snapshot > tiny && to_snapshot < dt_try) dt_try = to_snapshot;
+    old = state;
+    const StepResult result = solver.advance(state, old, dt_try);
+    summary.outer_iterations += result.iterations;
+    if (!result.converged) {
+      state = old;
+      ++summary.redone_steps;
+      dt = 0.5 * dt_try;
+      context.log(fmt::format("t = {:.6g} s: step not converged (largest residual {:.3g} after {} "
+                              "outer iterations); dt -> {:.3g} s, step redone",
+                              time, result.residuals.largest(), result.iterations, dt));
+      if (dt < run.dt_min) {
+        summary.failure = "the time step fell below run.dt_min = " + std::to_string(run.dt_min) +
+                          " s at t = " + std::to_string(time) + " s";
+        break;
+      }
+      continue;
+    }
+    time += dt_try;
+    ++step;
+    summary.last_dt = dt_try;
+    context.monitor.append(time, monitor_row(context, solver, state, dt_try, result));
+    if (context.output.snapshot_due(time)) context.output.write(state, time, step, dt_try);
+    context.progress.update(time, dt_try, result.iterations);
+    if (result.iterations <= numerics.easy_outer_iterations && dt_try >= dt * (1 - 1e-12) &&
+        dt < run.dt_max) {
+      const double grown = std::min(dt * numerics.dt_growth, run.dt_max);
+      context.log(fmt::format("t = {:.6g} s: converged in {} outer iterations; dt {:.3g} s -> {:.3g} s",
+                              time, result.iterations, dt, grown));
+      dt = grown;
+    }
+  }
+  context.progress.finish();
+  summary.time = time;
+  summary.steps = step - start_step;
+  summary.completed = summary.failure.empty();
+  return summary;
+}
+
+}  // namespace bagnold::solver

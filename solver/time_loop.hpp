@@ -1,0 +1,47 @@
+#pragma once
+// The time loop of a run: advance with an adaptive step from the current time to run.end_time,
+// append the monitor every step, write snapshots when due, show progress.
+//
+// Adaptive time step: a step that does not converge within numerics.max_outer_iterations (or
+// produces NaN) is undone and redone with dt / 2; a step that converges within
+// numerics.easy_outer_iterations lets the next grow by numerics.dt_growth, up to run.dt_max.
+// Steps are shortened to land exactly on snapshot times and on end_time. Every change of dt is
+// logged. A step that fails at run.dt_min stops the run.
+
+#include <functional>
+#include <string>
+
+#include "solver/simple/gas_solver.hpp"
+#include "src/io/monitor.hpp"
+#include "src/run/output_writer.hpp"
+#include "src/run/progress.hpp"
+
+namespace bagnold::solver {
+
+struct RunSummary {
+  bool completed = false;
+  double time = 0.0;
+  long steps = 0;
+  long outer_iterations = 0;
+  long redone_steps = 0;
+  double last_dt = 0.0;
+  std::string failure;  // why the run stopped early
+};
+
+struct TimeLoopContext {
+  const deck::Deck& deck;
+  const parallel::Domain& domain;
+  run::OutputWriter& output;
+  io::Monitor& monitor;
+  run::ProgressLine& progress;
+  std::function<void(const std::string&)> log;  // rank 0 prints
+};
+
+RunSummary run_time_loop(const TimeLoopContext& context, GasSolver& solver, run::FlowState& state,
+                         double start_time, long start_step);
+
+// The monitor row after a step (columns of run::monitor_columns).
+std::vector<double> monitor_row(const TimeLoopContext& context, const GasSolver& solver,
+                                const run::FlowState& state, double dt, const StepResult& step);
+
+}  // namespace bagnold::solver

@@ -17,7 +17,7 @@ const std::vector<std::string> top_level_sections = {
     "numerics", "output"};
 
 toml::source_region no_source(const std::string& file) {
-  toml::source_region r;
+  toml::source_region r{};  // value-initialized: line 0 means "no position"
   r.path = std::make_shared<const std::string>(file);
   return r;
 }

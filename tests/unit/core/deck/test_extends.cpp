@@ -198,6 +198,9 @@ TEST_F(DeckExtends, MissingDeckFile) {
   } catch (const deck::DeckError& e) {
     ASSERT_EQ(e.errors().size(), 1u);
     EXPECT_EQ(e.errors()[0].file, (m_dir / "absent.toml").string());
+    EXPECT_EQ(e.errors()[0].line, 0);  // no position in a file that cannot be read
+    EXPECT_EQ(e.errors()[0].to_string(),
+              (m_dir / "absent.toml").string() + ": cannot open the deck file for reading");
     EXPECT_TRUE(contains(e.errors()[0].message, "cannot open")) << e.what();
   }
 }

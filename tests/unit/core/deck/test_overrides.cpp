@@ -110,6 +110,8 @@ TEST(DeckOverride, BadPath) {
     const auto errors = errors_of(with_boundaries, {bad});
     ASSERT_EQ(errors.size(), 1u) << bad << "\n" << report_of(errors);
     EXPECT_EQ(errors[0].file, "--set " + bad);
+    EXPECT_EQ(errors[0].line, 0);
+    EXPECT_EQ(errors[0].column, 0);
     EXPECT_TRUE(contains(errors[0].message, "not a valid key path")) << errors[0].message;
   }
 }

@@ -12,7 +12,8 @@ GasSolver::GasSolver(const deck::Deck& deck, const parallel::Domain& domain)
     : m_deck(deck),
       m_domain(domain),
       m_faces(deck, domain),
-      m_limiter(limiter_from_name(deck.numerics.convection)) {
+      m_limiter(limiter_from_name(deck.numerics.convection)),
+      m_simplec(deck.numerics.algorithm == "simplec") {
   const auto& layout = domain.layout;
   const auto local = static_cast<std::size_t>(layout.local_count());
   m_width.resize(3 * local);

@@ -61,6 +61,7 @@ class GasSolver {
   const parallel::Domain& m_domain;
   VelocityFaces m_faces;
   Limiter m_limiter;
+  bool m_simplec;
   std::vector<double> m_width;  // 3 per local cell
   std::array<std::unique_ptr<UnknownNumbering>, 3> m_velocity_numbering;
   std::unique_ptr<UnknownNumbering> m_pressure_numbering;

@@ -99,13 +99,14 @@ struct InitialRegion {
 };
 
 struct Numerics {
+  std::string algorithm = "simplec";     // simplec | simple
   std::string convection = "superbee";   // upwind | superbee | muscl | van_leer | minmod
   double tolerance = 1e-4;               // normalized residual for convergence of a step
   int max_outer_iterations = 40;         // before the step is redone with dt / 2
   int easy_outer_iterations = 8;         // at or below: the next step grows
   double dt_growth = 1.2;                // factor after an easy step
   double relax_velocity = 0.7;           // α_u
-  double relax_pressure = 0.3;           // α_p
+  double relax_pressure = 1.0;           // α_p (SIMPLE needs about 0.3)
   std::string pressure_preconditioner = "gamg";  // gamg | hypre
   double pressure_tolerance = 1e-4;      // relative, per outer iteration
   double momentum_tolerance = 1e-4;      // relative, per outer iteration

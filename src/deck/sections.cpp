@@ -184,6 +184,8 @@ const Section<InitialRegion>& initial_section() {
 
 const Section<Numerics>& numerics_section() {
   static const Section<Numerics> s{"numerics", "Discretization and solver controls", {
+      key(&Numerics::algorithm, "algorithm").init("simplec").one_of({"simplec", "simple"})
+          .doc("Pressure-velocity coupling: SIMPLEC (d = A/(a_P − Σa_nb)) or SIMPLE (use relax_pressure ~0.3)."),
       key(&Numerics::convection, "convection").init("superbee")
           .one_of({"upwind", "superbee", "muscl", "van_leer", "minmod"})
           .doc("Convection scheme: first-order upwind, or a TVD limiter by deferred correction."),
@@ -197,7 +199,7 @@ const Section<Numerics>& numerics_section() {
           .doc("Factor by which dt grows after an easy step (up to run.dt_max)."),
       key(&Numerics::relax_velocity, "relax_velocity").unit("-").init(0.7).within(0.05, 1.0)
           .doc("Under-relaxation of the momentum equations, α_u."),
-      key(&Numerics::relax_pressure, "relax_pressure").unit("-").init(0.3).within(0.01, 1.0)
+      key(&Numerics::relax_pressure, "relax_pressure").unit("-").init(1.0).within(0.01, 1.0)
           .doc("Under-relaxation of the pressure correction, α_p."),
       key(&Numerics::pressure_preconditioner, "pressure_preconditioner").init("gamg")
           .one_of({"gamg", "hypre"})

@@ -4,6 +4,9 @@
 #include "src/app/commands.hpp"
 #include "src/app/exit_codes.hpp"
 #include "src/parallel/communicator.hpp"
+#include "src/util/closest_match.hpp"
+
+#include <algorithm>
 
 int main(int argc, char** argv) {
   using namespace bagnold::app;
@@ -42,6 +45,18 @@ int main(int argc, char** argv) {
       ->allow_extra_args(false);
   auto* keys = cli.add_subcommand("keys", "Print the deck key reference (Markdown, docs/deck.md)");
 
+  // Name an unknown command (CLI11 would only say that a subcommand is required).
+  if (argc > 1 && argv[1][0] != '-') {
+    std::vector<std::string> known;
+    for (const auto* sub : cli.get_subcommands([](CLI::App*) { return true; }))
+      known.push_back(sub->get_name());
+    if (std::find(known.begin(), known.end(), argv[1]) == known.end()) {
+      std::string message = std::string("bagnold: unknown command '") + argv[1] + "'";
+      if (auto guess = bagnold::closest_match(argv[1], known)) message += "; did you mean '" + *guess + "'?";
+      say(message + " (commands: " + bagnold::join(known) + ")", true);
+      return bad_input;
+    }
+  }
   try {
     cli.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

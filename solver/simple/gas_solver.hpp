@@ -45,6 +45,12 @@ class GasSolver {
   // Advances `state` (holding the last iterate, initially `old`) by one time step dt.
   StepResult advance(run::FlowState& state, const run::FlowState& old, double dt);
 
+  // An extra momentum source [N/m³] at each face velocity of direction d (local_count()
+  // entries, indexed by the owning cell), e.g. a manufactured solution's forcing. Empty: none.
+  void set_momentum_source(int d, std::vector<double> source) {
+    m_source[static_cast<std::size_t>(d)] = std::move(source);
+  }
+
   // Net mass flux [kg/s] out through each boundary region (monitor).
   std::vector<double> boundary_mass_flux(const run::FlowState& state) const;
 
@@ -68,6 +74,7 @@ class GasSolver {
   std::array<std::unique_ptr<LinearSystem>, 3> m_momentum_system;
   std::unique_ptr<LinearSystem> m_pressure_system;
   std::array<std::vector<double>, 3> m_d;  // d = A / a_P (relaxed) of each unknown face velocity
+  std::array<std::vector<double>, 3> m_source;  // optional momentum sources [N/m³]
 };
 
 }  // namespace bagnold::solver

@@ -127,6 +127,7 @@ double GasSolver::predict_momentum(int d, run::FlowState& state, const run::Flow
 
     b += (pressure[static_cast<std::size_t>(l)] - pressure[static_cast<std::size_t>(n)]) * area_d;
     b += rho * m_deck.physics.gravity[ud] * volume;
+    if (!m_source[ud].empty()) b += m_source[ud][static_cast<std::size_t>(l)] * volume;
     const double a_transient = rho * volume / dt;
     a_p += a_transient;
     b += a_transient * u_old[static_cast<std::size_t>(l)];

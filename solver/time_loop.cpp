@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "src/run/monitor_columns.hpp"
+#include "src/run/stop_request.hpp"
 
 namespace bagnold::solver {
 
@@ -22,13 +23,13 @@ std::vector<double> monitor_row(const TimeLoopContext& context, const GasSolver&
 }
 
 RunSummary run_time_loop(const TimeLoopContext& context, GasSolver& solver, run::FlowState& state,
-                         double start_time, long start_step) {
+                         double start_time, long start_step, double dt_start) {
   const auto& run = context.deck.run;
   const auto& numerics = context.deck.numerics;
   RunSummary summary;
   double time = start_time;
   long step = start_step;
-  double dt = run.dt_initial;
+  double dt = dt_start;
   run::FlowState old = state;
   const double end = run.end_time;
   const double tiny = 1e-12 * std::max(1.0, end);
@@ -48,8 +49,11 @@ RunSummary run_time_loop(const TimeLoopContext& context, GasSolver& solver, run:
                               "outer iterations); dt -> {:.3g} s, step redone",
                               time, result.residuals.largest(), result.iterations, dt));
       if (dt < run.dt_min) {
-        summary.failure = "the time step fell below run.dt_min = " + std::to_string(run.dt_min) +
-                          " s at t = " + std::to_string(time) + " s";
+        summary.failure = fmt::format(
+            "the time step fell below run.dt_min = {:.3g} s at t = {:.6g} s (largest residual "
+            "{:.3g}: momentum x {:.3g}, y {:.3g}, z {:.3g}, continuity {:.3g})",
+            run.dt_min, time, result.residuals.largest(), result.residuals.momentum[0],
+            result.residuals.momentum[1], result.residuals.momentum[2], result.residuals.continuity);
         break;
       }
       continue;
@@ -58,8 +62,6 @@ RunSummary run_time_loop(const TimeLoopContext& context, GasSolver& solver, run:
     ++step;
     summary.last_dt = dt_try;
     context.monitor.append(time, monitor_row(context, solver, state, dt_try, result));
-    if (context.output.snapshot_due(time)) context.output.write(state, time, step, dt_try);
-    context.progress.update(time, dt_try, result.iterations);
     if (result.iterations <= numerics.easy_outer_iterations && dt_try >= dt * (1 - 1e-12) &&
         dt < run.dt_max) {
       const double grown = std::min(dt * numerics.dt_growth, run.dt_max);
@@ -67,11 +69,22 @@ RunSummary run_time_loop(const TimeLoopContext& context, GasSolver& solver, run:
                               time, result.iterations, dt, grown));
       dt = grown;
     }
+    // The snapshot records the next dt, so a restart continues exactly as this run would.
+    const bool stop = run::stop_requested(context.domain.layout.comm());
+    if (context.output.snapshot_due(time) || stop)
+      context.output.write(state, time, step, dt_try, dt);
+    context.progress.update(time, dt_try, result.iterations);
+    if (stop) {
+      summary.interrupted = true;
+      context.log(fmt::format("t = {:.6g} s: stopped by signal {}; final snapshot written", time,
+                              run::stop_signal()));
+      break;
+    }
   }
   context.progress.finish();
   summary.time = time;
   summary.steps = step - start_step;
-  summary.completed = summary.failure.empty();
+  summary.completed = summary.failure.empty() && !summary.interrupted;
   return summary;
 }
 

@@ -25,7 +25,8 @@ struct RunSummary {
   long outer_iterations = 0;
   long redone_steps = 0;
   double last_dt = 0.0;
-  std::string failure;  // why the run stopped early
+  bool interrupted = false;  // SIGINT/SIGTERM: stopped after writing a final snapshot
+  std::string failure;       // why the run stopped early
 };
 
 struct TimeLoopContext {
@@ -37,8 +38,10 @@ struct TimeLoopContext {
   std::function<void(const std::string&)> log;  // rank 0 prints
 };
 
+// From `start_time` (step number `start_step`) with a first step of `dt_start`. A SIGINT or
+// SIGTERM stops the loop after the current step with a final snapshot (summary.interrupted).
 RunSummary run_time_loop(const TimeLoopContext& context, GasSolver& solver, run::FlowState& state,
-                         double start_time, long start_step);
+                         double start_time, long start_step, double dt_start);
 
 // The monitor row after a step (columns of run::monitor_columns).
 std::vector<double> monitor_row(const TimeLoopContext& context, const GasSolver& solver,

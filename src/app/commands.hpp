@@ -10,6 +10,7 @@ struct DeckArguments {
   std::string deck;
   std::vector<std::string> overrides;  // --set key=value
   std::string petsc_options;           // --petsc-options "-log_view ..."
+  std::string restart;                 // --restart SNAPSHOT_OR_RUN_DIR
 };
 
 struct RheometerArguments {

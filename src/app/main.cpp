@@ -25,6 +25,8 @@ int main(int argc, char** argv) {
   };
   auto* run = cli.add_subcommand("run", "Run the simulation a deck describes");
   add_deck_options(run);
+  run->add_option("--restart", deck_args.restart,
+                  "Continue from a snapshot (or the last snapshot of a run directory)");
   run->add_option("--petsc-options", deck_args.petsc_options,
                   "PETSc options, e.g. \"-log_view -pressure_ksp_monitor\"");
   auto* check = cli.add_subcommand(

@@ -8,6 +8,7 @@
 
 #include "solver/time_loop.hpp"
 #include "src/run/progress.hpp"
+#include "src/run/stop_request.hpp"
 #include "src/app/commands.hpp"
 #include "src/app/exit_codes.hpp"
 #include "src/deck/load.hpp"
@@ -18,6 +19,52 @@
 #include "src/run/output_writer.hpp"
 
 namespace bagnold::app {
+
+namespace {
+
+struct StartPoint {
+  double time = 0.0;
+  long step = 0;
+  double dt = 0.0;       // the first step to try
+  std::string snapshot;  // empty: a fresh start
+};
+
+// Reads every field of the snapshot into `state` (any number of ranks); throws io::Hdf5Error
+// when the snapshot does not fit this deck's grid or geometry.
+StartPoint restore_state(const std::string& file_or_directory, const parallel::Domain& domain,
+                         run::FlowState& state) {
+  StartPoint start;
+  start.snapshot = run::find_snapshot(file_or_directory);
+  std::vector<std::vector<double>> fields;
+  const auto contents =
+      io::read_snapshot(start.snapshot, domain.layout, run::FlowState::field_names(), fields);
+  const auto targets = state.fields();
+  for (std::size_t f = 0; f < targets.size(); ++f) *targets[f] = std::move(fields[f]);
+  start.time = contents.info.time;
+  start.step = contents.info.step;
+  start.dt = contents.info.dt_next;
+  return start;
+}
+
+// Until the two-fluid solver (issue 4): a deck with solids writes its initial state and stops.
+int write_initial_state_only(const deck::Deck& deck, const parallel::Domain& domain,
+                             const run::FlowState& state, run::OutputWriter& output,
+                             io::Monitor& monitor) {
+  const auto inventory = run::phase_inventory(deck, domain, state);
+  std::vector<double> row(monitor.columns().size(), 0.0);
+  row[3] = inventory.gas;
+  row[4] = inventory.solids;
+  monitor.append(0.0, row);
+  const std::string path = output.write(state, 0.0, 0, deck.run.dt_initial);
+  say(fmt::format("initial state: solids {:.6g} kg, gas {:.6g} kg; wrote {}", inventory.solids,
+                  inventory.gas, path));
+  say("bagnold run: this build has no two-fluid solver yet (issue 4); a deck with solids "
+      "stops at t = 0 after writing its initial state",
+      true);
+  return success;
+}
+
+}  // namespace
 
 int run_command(const DeckArguments& args) {
   deck::Deck deck;
@@ -37,38 +84,48 @@ int run_command(const DeckArguments& args) {
                                static_cast<int>(run::FlowState::field_names().size())));
     run::FlowState state(domain.layout.local_count());
     run::set_initial_state(deck, domain, state);
+    StartPoint start{0.0, 0, deck.run.dt_initial, ""};
+    if (!args.restart.empty()) {
+      try {
+        start = restore_state(args.restart, domain, state);
+      } catch (const io::Hdf5Error& e) {
+        say(std::string("bagnold run: cannot restart: ") + e.what(), true);
+        return bad_input;
+      }
+      say(fmt::format("restart from {} at t = {:.6g} s, step {}", start.snapshot, start.time, start.step));
+    }
     run::OutputWriter output(deck, domain);
+    if (!start.snapshot.empty()) output.resume(start.time);
     io::Monitor monitor(output.directory() + "/monitor.csv", run::monitor_columns(domain.regions),
-                        comm.is_root());
+                        comm.is_root(), start.snapshot.empty() ? nullptr : &start.time);
     solver::PetscSession petsc(nullptr, nullptr);
     if (!args.petsc_options.empty())
       solver::petsc_check(PetscOptionsInsertString(nullptr, args.petsc_options.c_str()),
                           "PetscOptionsInsertString");
-    if (deck.solids.enabled) {
-      const auto inventory = run::phase_inventory(deck, domain, state);
-      monitor.append(0.0, std::vector<double>(monitor.columns().size(), 0.0));
-      const std::string path = output.write(state, 0.0, 0, deck.run.dt_initial);
-      say(fmt::format("initial state: solids {:.6g} kg, gas {:.6g} kg; wrote {}", inventory.solids,
-                      inventory.gas, path));
-      say("bagnold run: this build has no two-fluid solver yet (issue 4); a deck with solids "
-          "stops at t = 0 after writing its initial state",
-          true);
-      return success;
-    }
+    if (deck.solids.enabled) return write_initial_state_only(deck, domain, state, output, monitor);
+
     solver::GasSolver gas(deck, domain);
-    gas.apply_boundary_values(state);
-    output.write(state, 0.0, 0, deck.run.dt_initial);
-    run::ProgressLine progress(deck.output.progress, comm.is_root(), deck.run.end_time, 0.0);
+    if (start.snapshot.empty()) {
+      gas.apply_boundary_values(state);
+      output.write(state, 0.0, 0, deck.run.dt_initial, deck.run.dt_initial);
+    }
+    run::install_stop_handlers();
+    run::ProgressLine progress(deck.output.progress, comm.is_root(), deck.run.end_time, start.time);
     const solver::TimeLoopContext context{deck, domain, output, monitor, progress,
                                           [](const std::string& line) { say(line); }};
     const auto started = std::chrono::steady_clock::now();
-    const auto result = solver::run_time_loop(context, gas, state, 0.0, 0);
+    const auto result = solver::run_time_loop(context, gas, state, start.time, start.step, start.dt);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    const double per_step = result.steps ? static_cast<double>(result.outer_iterations) /
+                                               static_cast<double>(result.steps)
+                                         : 0.0;
     say(fmt::format("bagnold run: t = {:.6g} s after {} steps ({} redone), {:.2f} outer iterations "
                     "per step, {:.1f} s wall",
-                    result.time, result.steps, result.redone_steps,
-                    result.steps ? static_cast<double>(result.outer_iterations) / static_cast<double>(result.steps) : 0.0,
-                    wall));
+                    result.time, result.steps, result.redone_steps, per_step, wall));
+    if (result.interrupted) {
+      say("bagnold run: interrupted; continue with --restart " + output.directory(), true);
+      return interrupted;
+    }
     if (!result.completed) {
       say("bagnold run: failed: " + result.failure, true);
       return run_failed;

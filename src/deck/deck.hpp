@@ -107,7 +107,7 @@ struct Numerics {
   double dt_growth = 1.2;                // factor after an easy step
   double relax_velocity = 0.7;           // α_u
   double relax_pressure = 1.0;           // α_p (SIMPLE needs about 0.3)
-  std::string pressure_preconditioner = "gamg";  // gamg | hypre
+  std::string pressure_preconditioner = "hypre";  // hypre | gamg
   double pressure_tolerance = 1e-4;      // relative, per outer iteration
   double momentum_tolerance = 1e-4;      // relative, per outer iteration
 };

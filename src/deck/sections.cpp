@@ -201,9 +201,10 @@ const Section<Numerics>& numerics_section() {
           .doc("Under-relaxation of the momentum equations, α_u."),
       key(&Numerics::relax_pressure, "relax_pressure").unit("-").init(1.0).within(0.01, 1.0)
           .doc("Under-relaxation of the pressure correction, α_p."),
-      key(&Numerics::pressure_preconditioner, "pressure_preconditioner").init("gamg")
-          .one_of({"gamg", "hypre"})
-          .doc("Algebraic multigrid for the pressure correction (PETSc GAMG or hypre BoomerAMG)."),
+      key(&Numerics::pressure_preconditioner, "pressure_preconditioner").init("hypre")
+          .one_of({"hypre", "gamg"})
+          .doc("Algebraic multigrid for the pressure correction: hypre BoomerAMG (restarts "
+               "bit-exactly) or PETSc GAMG (restarts to ~1e-11: its setup carries state)."),
       key(&Numerics::pressure_tolerance, "pressure_tolerance").unit("-").init(1e-4)
           .within(1e-14, 0.5).doc("Relative tolerance of the pressure-correction solve."),
       key(&Numerics::momentum_tolerance, "momentum_tolerance").unit("-").init(1e-4)

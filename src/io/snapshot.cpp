@@ -186,6 +186,13 @@ void write_grid(hid_t file, const parallel::Layout& layout, const grid::CellFlag
 
 }  // namespace
 
+double snapshot_time(const std::string& path) {
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  File file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT));
+  if (file.get() < 0) throw Hdf5Error("cannot open snapshot " + path);
+  return read_double_attribute(file.get(), "time");
+}
+
 const char* centering_name(Centering c) {
   switch (c) {
     case Centering::cell: return "cell";
@@ -208,6 +215,7 @@ void write_snapshot(const std::string& path, const parallel::Layout& layout,
     write_attribute(file.get(), "time", info.time);
     write_attribute(file.get(), "step", info.step);
     write_attribute(file.get(), "dt", info.dt);
+    write_attribute(file.get(), "dt_next", info.dt_next > 0 ? info.dt_next : info.dt);
     write_attribute(file.get(), "format_version", static_cast<long>(format_version));
     write_attribute(file.get(), "bagnold_version", std::string(bagnold_version));
     write_attribute(file.get(), "title", info.title);
@@ -259,6 +267,8 @@ SnapshotContents read_snapshot(const std::string& path, const parallel::Layout& 
   contents.info.time = read_double_attribute(file.get(), "time");
   contents.info.dt = read_double_attribute(file.get(), "dt");
   contents.info.step = read_long_attribute(file.get(), "step");
+  contents.info.dt_next = H5Aexists(file.get(), "dt_next") > 0
+                              ? read_double_attribute(file.get(), "dt_next") : contents.info.dt;
 
   // The grid must be the one this run uses, face by face.
   const char* face_names[] = {"grid/x_faces", "grid/y_faces", "grid/z_faces"};

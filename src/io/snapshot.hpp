@@ -35,9 +35,13 @@ struct FieldView {
 struct SnapshotInfo {
   double time = 0.0;
   long step = 0;
-  double dt = 0.0;
+  double dt = 0.0;       // [s] the last step
   std::string title;
+  double dt_next = 0.0;  // [s] the step the time loop would take next (exact restart)
 };
+
+// The time [s] a snapshot was written at (rank-local, serial read); throws when unreadable.
+double snapshot_time(const std::string& path);
 
 // Collective: every rank calls with the same field names in the same order.
 void write_snapshot(const std::string& path, const parallel::Layout& layout,

@@ -35,11 +35,40 @@ OutputWriter::OutputWriter(const deck::Deck& deck, const parallel::Domain& domai
   if (failed) throw io::Hdf5Error(problem.empty() ? "cannot write to the output directory '" + m_directory + "'" : problem);
 }
 
-std::string OutputWriter::write(const FlowState& state, double time, long step, double dt) {
+std::string find_snapshot(const std::string& file_or_directory) {
+  if (!fs::is_directory(file_or_directory)) return file_or_directory;
+  std::string last;
+  for (const auto& entry : fs::directory_iterator(file_or_directory)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind("snapshot_", 0) == 0 && entry.path().extension() == ".h5" && name > fs::path(last).filename().string())
+      last = entry.path().string();
+  }
+  if (last.empty()) throw io::Hdf5Error("no snapshot in " + file_or_directory);
+  return last;
+}
+
+void OutputWriter::resume(double time) {
+  m_index.clear();
+  for (std::size_t n = 0;; ++n) {
+    char name[64];
+    std::snprintf(name, sizeof name, "snapshot_%06zu.h5", n);
+    const fs::path path = fs::path(m_directory) / name;
+    if (!fs::exists(path)) break;
+    const double t = io::snapshot_time(path.string());
+    if (t > time * (1 + 1e-12) + 1e-300) break;
+    m_index.push_back({name, t});
+  }
+  m_next_time = 0.0;
+  while (m_next_time <= time * (1 + 1e-12)) m_next_time += m_interval;
+}
+
+std::string OutputWriter::write(const FlowState& state, double time, long step, double dt,
+                                double dt_next) {
   char name[64];
   std::snprintf(name, sizeof name, "snapshot_%06zu.h5", m_index.size());
   const std::string path = (fs::path(m_directory) / name).string();
-  io::write_snapshot(path, m_domain.layout, m_domain.flags, state.views(), {time, step, dt, m_title});
+  io::write_snapshot(path, m_domain.layout, m_domain.flags, state.views(),
+                     {time, step, dt, m_title, dt_next});
   m_index.push_back({name, time});
   if (m_domain.layout.comm().is_root())
     io::write_file_atomically((fs::path(m_directory) / "run.xmf").string(),

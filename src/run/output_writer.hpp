@@ -13,6 +13,9 @@
 
 namespace bagnold::run {
 
+// The snapshot a --restart argument names: the file itself, or a run directory's last snapshot.
+std::string find_snapshot(const std::string& file_or_directory);
+
 class OutputWriter {
  public:
   // Collective. Throws io::Hdf5Error with the directory's name if it cannot be created or written.
@@ -21,7 +24,10 @@ class OutputWriter {
   double next_snapshot_time() const { return m_next_time; }
   bool snapshot_due(double time) const { return time >= m_next_time - 1e-12 * (1.0 + time); }
   // Collective: writes a snapshot of `state` and updates the index; returns its path.
-  std::string write(const FlowState& state, double time, long step, double dt);
+  std::string write(const FlowState& state, double time, long step, double dt, double dt_next = 0);
+  // For a restart at `time`: keeps the directory's snapshots up to that time in the index (later
+  // ones will be overwritten) and schedules the next snapshot after it. Collective.
+  void resume(double time);
   const std::string& directory() const { return m_directory; }
 
  private:

@@ -130,6 +130,9 @@ int run_command(const DeckArguments& args) {
       say("bagnold run: failed: " + result.failure, true);
       return run_failed;
     }
+  } catch (const grid::GeometryError& e) {
+    say(std::string("bagnold run: ") + args.deck + ": " + e.what(), true);
+    return bad_input;
   } catch (const std::exception& e) {
     say(std::string("bagnold run: failed: ") + e.what(), true);
     return run_failed;

@@ -4,6 +4,7 @@
 // (blocked and away from fluid: never stored). Boundary cells belong to a boundary region.
 
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -11,6 +12,12 @@
 #include "src/grid/structured_grid.hpp"
 
 namespace bagnold::grid {
+
+// A deck whose geometry cannot be run (e.g. every cell blocked): bad input, with the reason.
+class GeometryError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
 
 enum class CellKind : std::uint8_t { excluded = 0, fluid = 1, boundary = 2 };
 

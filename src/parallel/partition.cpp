@@ -65,8 +65,10 @@ std::vector<int> partition_cells(const grid::StructuredGrid& grid, const grid::C
       vertex_of[c] = static_cast<idx_t>(fluid_cells.size());
       fluid_cells.push_back(static_cast<std::int64_t>(c));
     }
+  if (fluid_cells.empty())
+    throw grid::GeometryError("the geometry blocks every cell of the domain: nothing can flow");
   if (parts > static_cast<int>(fluid_cells.size()))
-    throw std::runtime_error("more ranks (" + std::to_string(parts) + ") than fluid cells (" +
+    throw grid::GeometryError("more ranks (" + std::to_string(parts) + ") than fluid cells (" +
                              std::to_string(fluid_cells.size()) + ")");
   if (parts > 1) {
     const auto part = metis_parts(grid, flags, fluid_cells, vertex_of, parts);

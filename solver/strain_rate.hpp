@@ -1,0 +1,22 @@
+#pragma once
+// The strain-rate invariants the solids-stress closures need, at cell centres, from staggered
+// face velocities (issue 4, step 1 of the outer iteration):
+//   cell-centred velocity  u_c = ½ (U_east + U_west) (likewise v, w), exact for linear fields;
+//   ∇u by central differences of the cell-centred velocities between the two face neighbours,
+//   one-sided where a neighbour is not fluid, zero where neither is;
+//   D = ½ (∇u + ∇uᵀ),  γ̇ = sqrt(2 D:D) (model-notes.md: simple shear u_x = γ̇ z gives γ̇),
+//   tr D = ∂u/∂x + ∂v/∂y + ∂w/∂z (from the face velocities directly: exact discrete divergence).
+// Computed for owned fluid cells; the halo is exchanged; other cells get zero.
+
+#include <array>
+#include <vector>
+
+#include "src/parallel/domain.hpp"
+
+namespace bagnold::solver {
+
+void compute_strain_rate(const parallel::Domain& domain,
+                         const std::array<std::vector<double>, 3>& velocity,
+                         std::vector<double>& strain_rate, std::vector<double>& divergence);
+
+}  // namespace bagnold::solver

@@ -1,0 +1,68 @@
+// Strain-rate invariants from staggered velocities: exact for linear velocity fields, on uniform
+// and stretched grids, with walls (one-sided differences), on 1 and 2 ranks.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "solver/strain_rate.hpp"
+#include "src/deck/load.hpp"
+#include "tests/support/test_decks.hpp"
+
+namespace bagnold::tests {
+namespace {
+
+// Fills face velocities with u = A x (A a constant 3 × 3 matrix), evaluated at each face centre.
+std::array<std::vector<double>, 3> linear_field(const parallel::Domain& domain, const double (&a)[3][3]) {
+  const auto& layout = domain.layout;
+  std::array<std::vector<double>, 3> u;
+  for (int d = 0; d < 3; ++d) {
+    u[static_cast<std::size_t>(d)].assign(static_cast<std::size_t>(layout.local_count()), 0.0);
+    for (int l = 0; l < layout.local_count(); ++l) {
+      auto x = domain.grid.centre(layout.index3(l));
+      x[static_cast<std::size_t>(d)] = domain.grid.axis(d).upper_face(layout.index3(l)[static_cast<std::size_t>(d)]);
+      double value = 0.0;
+      for (int b = 0; b < 3; ++b) value += a[d][b] * x[static_cast<std::size_t>(b)];
+      u[static_cast<std::size_t>(d)][static_cast<std::size_t>(l)] = value;
+    }
+  }
+  return u;
+}
+
+void expect_exact(const std::string& deck_text, const double (&a)[3][3],
+                  const std::vector<std::string>& overrides = {}) {
+  const auto deck = deck::load_deck_text(deck_text, "strain.toml", overrides);
+  const parallel::Domain domain(deck, parallel::Communicator());
+  std::vector<double> gamma_dot, divergence;
+  solver::compute_strain_rate(domain, linear_field(domain, a), gamma_dot, divergence);
+  double dd = 0.0;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) dd += 0.25 * (a[i][j] + a[j][i]) * (a[i][j] + a[j][i]);
+  const double expected_rate = std::sqrt(2.0 * dd);
+  const double expected_divergence = a[0][0] + a[1][1] + a[2][2];
+  for (int l = 0; l < domain.layout.owned_fluid_count(); ++l) {
+    // Round-off of differences of O(1) values over 1 cm cells.
+    EXPECT_NEAR(gamma_dot[static_cast<std::size_t>(l)], expected_rate, 1e-9) << "cell " << l;
+    EXPECT_NEAR(divergence[static_cast<std::size_t>(l)], expected_divergence, 1e-9);
+  }
+}
+
+TEST(StrainRate, SimpleShearGivesTheShearRate) {
+  // u_x = γ̇ z: γ̇ = sqrt(2 D:D) must return γ̇ itself (model-notes.md, shear-rate convention).
+  const double a[3][3] = {{0, 0, 3.0}, {0, 0, 0}, {0, 0, 0}};
+  expect_exact(box_deck(5, 4, 6), a);
+}
+
+TEST(StrainRate, GeneralLinearFieldIsExactOnAStretchedGrid) {
+  const double a[3][3] = {{0.5, -1.0, 2.0}, {0.3, -0.2, 0.7}, {-1.5, 0.4, 0.9}};
+  expect_exact(box_deck(6, 5, 7), a, {"grid.z.ratio=3.0", "grid.x.ratio=0.5"});
+}
+
+TEST(StrainRate, ExactNextToBlockedCells) {
+  const double a[3][3] = {{0, 1.0, 2.0}, {0, 0, 0}, {-2.0, 0, 0}};
+  expect_exact(box_deck(6, 4, 6, "[[geometry.block]]\nshape = \"box\"\nmin = [0.0, 0.0, 0.0]\n"
+                                 "max = [0.02, 0.04, 0.02]\n"),
+               a);
+}
+
+}  // namespace
+}  // namespace bagnold::tests

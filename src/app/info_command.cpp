@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "models/drag/drag_law.hpp"
 #include "models/stress/solids_stress.hpp"
 #include "src/app/commands.hpp"
 #include "src/app/exit_codes.hpp"
@@ -44,6 +45,10 @@ int info_command() {
           "." + std::to_string(METIS_VER_SUBMINOR) + "\n";
   text += "solids-stress models:\n";
   for (const auto& e : models::stress_registry().entries())
+    text += "  " + e.name + std::string(e.name.size() < 24 ? 24 - e.name.size() : 1, ' ') +
+            e.summary + "\n";
+  text += "drag laws:\n";
+  for (const auto& e : models::drag_registry().entries())
     text += "  " + e.name + std::string(e.name.size() < 24 ? 24 - e.name.size() : 1, ' ') +
             e.summary + "\n";
   say(text);

@@ -89,6 +89,7 @@ struct ModelChoice {
 
 struct Models {
   ModelChoice solids_stress;
+  ModelChoice drag;
 };
 
 struct InitialRegion {

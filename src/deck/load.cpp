@@ -4,6 +4,7 @@
 #include <set>
 #include <sstream>
 
+#include "models/drag/drag_law.hpp"
 #include "models/stress/solids_stress.hpp"
 #include "src/deck/sections.hpp"
 #include "src/util/closest_match.hpp"
@@ -294,12 +295,16 @@ void read_material_and_models(const toml::table& root, Deck& deck, Diagnostics& 
   read_section(solids, solids_section(), "solids", deck.solids.material, diag);
   read_section(solids, solids_switch_section(), "solids", deck.solids, diag, {}, false);
   const toml::table* models_table = subtable(root, "models", "models", diag);
-  if (models_table) check_unknown_keys(*models_table, "models", {"solids_stress"}, diag);
+  if (models_table) check_unknown_keys(*models_table, "models", {"solids_stress", "drag"}, diag);
   const toml::table* stress =
       models_table ? subtable(*models_table, "solids_stress", "models.solids_stress", diag) : nullptr;
   // Without solids the closure is not used: its name is checked only when given.
   read_model_choice(stress, "models.solids_stress", solids_stress_section(),
                     models::stress_registry(), deck.solids.enabled, deck.models.solids_stress, diag);
+  const toml::table* drag =
+      models_table ? subtable(*models_table, "drag", "models.drag", diag) : nullptr;
+  read_model_choice(drag, "models.drag", drag_section(), models::drag_registry(),
+                    deck.solids.enabled && deck.gas.enabled, deck.models.drag, diag);
 }
 
 void read_all(const toml::table& root, Deck& deck, Diagnostics& diag) {
@@ -477,6 +482,8 @@ std::string resolved_text(const Deck& d) {
   s << "\n[models.solids_stress]\n" << show_section(solids_stress_section(), d.models.solids_stress);
   s << "\n[models.solids_stress." << d.models.solids_stress.name << "]\n"
     << show_coefficients(d.models.solids_stress.coefficients);
+  s << "\n[models.drag]\n" << show_section(drag_section(), d.models.drag);
+  s << "\n[models.drag." << d.models.drag.name << "]\n" << show_coefficients(d.models.drag.coefficients);
   for (const auto& r : d.initial) s << "\n[[initial]]\n" << show_section(initial_section(), r);
   s << "\n[numerics]\n" << show_section(numerics_section(), d.numerics);
   s << "\n[output]\n" << show_section(output_section(), d.output);
@@ -499,6 +506,27 @@ void reference_table(std::ostringstream& s, const std::string& heading,
     s << "| `" << k.name << "` | " << k.type << " | " << (k.unit.empty() ? "" : k.unit) << " | "
       << (k.required ? std::string("**required**") : escape_cell(k.default_text)) << " | "
       << escape_cell(k.range) << " | " << escape_cell(k.doc) << " |\n";
+}
+
+std::vector<KeyInfo> coefficient_infos(const std::vector<models::CoefficientSpec>& specs) {
+  std::vector<KeyInfo> keys;
+  for (const auto& c : specs) {
+    KeyInfo k;
+    k.name = c.name;
+    k.unit = c.unit;
+    k.doc = c.doc;
+    if (std::holds_alternative<double>(c.default_value)) {
+      k.type = "a real number";
+      k.default_text = to_toml_text(std::get<double>(c.default_value));
+      k.range = "in [" + to_toml_text(c.min) + ", " + to_toml_text(c.max) + "]";
+    } else {
+      k.type = "a string";
+      k.default_text = to_toml_text(std::get<std::string>(c.default_value));
+      k.range = "one of: " + join(c.choices);
+    }
+    keys.push_back(k);
+  }
+  return keys;
 }
 
 template <class T>
@@ -528,26 +556,13 @@ std::string key_reference_markdown() {
   for (const auto& k : solids_section().infos()) solids.push_back(k);
   reference_table(s, "`[solids]` — Granular phase", solids);
   reference_section(s, solids_stress_section(), "`[models.solids_stress]`");
-  for (const auto& entry : models::stress_registry().entries()) {
-    std::vector<KeyInfo> keys;
-    for (const auto& c : entry.coefficients) {
-      KeyInfo k;
-      k.name = c.name;
-      k.unit = c.unit;
-      k.doc = c.doc;
-      if (std::holds_alternative<double>(c.default_value)) {
-        k.type = "a real number";
-        k.default_text = to_toml_text(std::get<double>(c.default_value));
-        k.range = "in [" + to_toml_text(c.min) + ", " + to_toml_text(c.max) + "]";
-      } else {
-        k.type = "a string";
-        k.default_text = to_toml_text(std::get<std::string>(c.default_value));
-        k.range = "one of: " + join(c.choices);
-      }
-      keys.push_back(k);
-    }
-    reference_table(s, "`[models.solids_stress." + entry.name + "]` — " + entry.summary, keys);
-  }
+  for (const auto& entry : models::stress_registry().entries())
+    reference_table(s, "`[models.solids_stress." + entry.name + "]` — " + entry.summary,
+                    coefficient_infos(entry.coefficients));
+  reference_section(s, drag_section(), "`[models.drag]`");
+  for (const auto& entry : models::drag_registry().entries())
+    reference_table(s, "`[models.drag." + entry.name + "]` — " + entry.summary,
+                    coefficient_infos(entry.coefficients));
   reference_section(s, initial_section(), "`[[initial]]`");
   reference_section(s, numerics_section(), "`[numerics]`");
   reference_section(s, output_section(), "`[output]`");

@@ -166,6 +166,14 @@ const Section<ModelChoice>& solids_stress_section() {
   return s;
 }
 
+const Section<ModelChoice>& drag_section() {
+  static const Section<ModelChoice> s{"models.drag", "Gas-solids drag", {
+      key(&ModelChoice::name, "model").init("gidaspow")
+          .doc("Drag law β; its constants go in [models.drag.<model>]."),
+  }};
+  return s;
+}
+
 const Section<InitialRegion>& initial_section() {
   static const Section<InitialRegion> s{"initial", "Initial state ([[initial]], later wins)", {
       key(&InitialRegion::min, "min").unit("m").init({-1e30, -1e30, -1e30})

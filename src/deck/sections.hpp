@@ -17,6 +17,7 @@ const Section<Gas>& gas_section();
 const Section<models::Material>& solids_section();
 const Section<Solids>& solids_switch_section();  // solids.enabled, read with [solids]
 const Section<ModelChoice>& solids_stress_section();  // [models.solids_stress]
+const Section<ModelChoice>& drag_section();           // [models.drag]
 const Section<InitialRegion>& initial_section();  // [[initial]]
 const Section<Numerics>& numerics_section();
 const Section<Output>& output_section();

@@ -71,7 +71,8 @@ RunSummary run_time_loop(const TimeLoopContext& context, GasSolver& solver, run:
     }
     // The snapshot records the next dt, so a restart continues exactly as this run would.
     const bool stop = run::stop_requested(context.domain.layout.comm());
-    if (context.output.snapshot_due(time) || stop)
+    const bool finished = time >= end - tiny;  // the final state is always written
+    if (context.output.snapshot_due(time) || stop || finished)
       context.output.write(state, time, step, dt_try, dt);
     context.progress.update(time, dt_try, result.iterations);
     if (stop) {

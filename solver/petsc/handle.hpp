@@ -57,6 +57,9 @@ using PetscNullSpace = PetscHandle<MatNullSpace, MatNullSpaceDestroy>;
 class PetscSession {
  public:
   PetscSession(int* argc, char*** argv);
+  // PETSc options from the command line ("-log_view -pressure_ksp_monitor"); starts logging
+  // when -log_view is among them (PETSc only does so for options given at initialization).
+  static void add_options(const std::string& options);
   ~PetscSession();
   PetscSession(const PetscSession&) = delete;
   PetscSession& operator=(const PetscSession&) = delete;

@@ -10,6 +10,14 @@ PetscSession::PetscSession(int* argc, char*** argv) {
 
 PetscSession::~PetscSession() { PetscFinalize(); }
 
+void PetscSession::add_options(const std::string& options) {
+  if (options.empty()) return;
+  petsc_check(PetscOptionsInsertString(nullptr, options.c_str()), "PetscOptionsInsertString");
+  PetscBool log_view = PETSC_FALSE;
+  petsc_check(PetscOptionsHasName(nullptr, nullptr, "-log_view", &log_view), "PetscOptionsHasName");
+  if (log_view) petsc_check(PetscLogDefaultBegin(), "PetscLogDefaultBegin");
+}
+
 LinearSystem::LinearSystem(MPI_Comm comm, std::int64_t rows, std::int64_t first_row,
                            const std::string& prefix, const KrylovSettings& settings)
     : m_comm(comm), m_rows(rows), m_first_row(first_row), m_settings(settings) {

@@ -99,9 +99,7 @@ int run_command(const DeckArguments& args) {
     io::Monitor monitor(output.directory() + "/monitor.csv", run::monitor_columns(domain.regions),
                         comm.is_root(), start.snapshot.empty() ? nullptr : &start.time);
     solver::PetscSession petsc(nullptr, nullptr);
-    if (!args.petsc_options.empty())
-      solver::petsc_check(PetscOptionsInsertString(nullptr, args.petsc_options.c_str()),
-                          "PetscOptionsInsertString");
+    solver::PetscSession::add_options(args.petsc_options);
     if (deck.solids.enabled) return write_initial_state_only(deck, domain, state, output, monitor);
 
     solver::GasSolver gas(deck, domain);

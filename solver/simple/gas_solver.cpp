@@ -1,6 +1,7 @@
 #include "solver/simple/gas_solver.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace bagnold::solver {
 
@@ -37,6 +38,22 @@ GasSolver::GasSolver(const deck::Deck& deck, const parallel::Domain& domain)
         std::make_unique<LinearSystem>(comm, n.owned_rows(), n.first_row, prefixes[d], momentum);
     m_d[static_cast<std::size_t>(d)].assign(local, 0.0);
   }
+  // Reference speed: the fastest boundary velocity, or the free-fall speed over the domain.
+  double extent = 0.0, gravity = 0.0;
+  for (int d = 0; d < 3; ++d) {
+    extent = std::max(extent, domain.grid.axis(d).faces().back() - domain.grid.axis(d).faces().front());
+    gravity += deck.physics.gravity[static_cast<std::size_t>(d)] * deck.physics.gravity[static_cast<std::size_t>(d)];
+  }
+  m_reference_speed = std::sqrt(std::sqrt(gravity) * extent);
+  for (const auto& region : domain.regions.regions)
+    for (int d = 0; d < 3; ++d)
+      m_reference_speed = std::max({m_reference_speed, std::abs(region.wall_velocity[static_cast<std::size_t>(d)]),
+                                    std::abs(region.gas_velocity[static_cast<std::size_t>(d)])});
+  if (m_reference_speed <= 0.0) m_reference_speed = 1.0;
+  double faces_area = 0.0;
+  for (int l = 0; l < layout.owned_fluid_count(); ++l)
+    for (int d = 0; d < 3; ++d) faces_area += face_area(l, d);  // ½ Σ over the 6 faces
+  m_reference_flux = deck.gas.density * layout.comm().sum(faces_area);
   m_pressure_numbering = std::make_unique<UnknownNumbering>(
       layout, [&](int l) { return layout.kind(l) == grid::CellKind::fluid; });
   KrylovSettings pressure;
@@ -46,6 +63,15 @@ GasSolver::GasSolver(const deck::Deck& deck, const parallel::Domain& domain)
   pressure.constant_null_space = !m_faces.has_pressure_boundary;
   m_pressure_system = std::make_unique<LinearSystem>(
       comm, m_pressure_numbering->owned_rows(), m_pressure_numbering->first_row, "pressure_", pressure);
+}
+
+double GasSolver::residual_velocity_scale(const run::FlowState& state) const {
+  const auto& layout = m_domain.layout;
+  double largest = 0.0;
+  for (const auto& component : state.gas_velocity)
+    for (int l = 0; l < layout.owned_count(); ++l)
+      largest = std::max(largest, std::abs(component[static_cast<std::size_t>(l)]));
+  return std::max(layout.comm().max(largest), 1e-3 * m_reference_speed);
 }
 
 double GasSolver::face_area(int local, int d) const {

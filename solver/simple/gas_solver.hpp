@@ -60,6 +60,11 @@ class GasSolver {
   // Step 2: solves the pressure correction, corrects P and u; returns the continuity residual.
   double correct_pressure(run::FlowState& state);
 
+  // The velocity residuals are measured against: the largest face velocity in the domain, but at
+  // least 1e-3 of the problem's reference speed (the fastest wall or inflow, or sqrt(|g| L)), so
+  // that a fluid at rest is judged against a meaningful scale rather than round-off.
+  double residual_velocity_scale(const run::FlowState& state) const;
+
   double width(int local, int d) const { return m_width[static_cast<std::size_t>(local) * 3 + static_cast<std::size_t>(d)]; }
   double face_area(int local, int d) const;  // area of the cell's face normal to d
 
@@ -75,6 +80,8 @@ class GasSolver {
   std::unique_ptr<LinearSystem> m_pressure_system;
   std::array<std::vector<double>, 3> m_d;  // d = A / a_P (relaxed) of each unknown face velocity
   std::array<std::vector<double>, 3> m_source;  // optional momentum sources [N/m³]
+  double m_reference_speed = 1.0;  // [m/s]
+  double m_reference_flux = 0.0;   // [kg/(s (m/s))]: ρ Σ_cells ½ Σ_faces A, per unit speed
 };
 
 }  // namespace bagnold::solver

@@ -10,7 +10,7 @@
 //   3. Under-relaxation (Patankar): a_P ← a_P / α_u, b ← b + (1 − α_u) a_P u_P*.
 //   4. d = A / a_P for the pressure correction; solve; exchange the halo.
 //   (SIMPLEC, the default: d = A / (a_P − Σ a_nb), with no pressure under-relaxation needed.)
-// Returns Σ|b + Σ a_nb u_nb − a_P u_P| / Σ a_P U before the solve, U the largest velocity.
+// Returns Σ|b + Σ a_nb u_nb − a_P u_P| / Σ a_P U before the solve (U: residual_velocity_scale).
 #include <algorithm>
 #include <cmath>
 
@@ -34,13 +34,7 @@ double GasSolver::predict_momentum(int d, run::FlowState& state, const run::Flow
   auto& d_coefficient = m_d[ud];
   auto at = [&](int local) { return u[static_cast<std::size_t>(local)]; };
   if (numbering.total_rows == 0) return 0.0;  // e.g. no fluid faces along d
-  // Residuals of all components are measured against one velocity scale, the largest face
-  // velocity anywhere, so a component that should vanish is not judged against itself.
-  double largest_velocity = 0.0;
-  for (const auto& component : state.gas_velocity)
-    for (int l = 0; l < layout.owned_count(); ++l)
-      largest_velocity = std::max(largest_velocity, std::abs(component[static_cast<std::size_t>(l)]));
-  const double velocity_scale = std::max(layout.comm().max(largest_velocity), 1e-12);
+  const double velocity_scale = residual_velocity_scale(state);
 
   double residual_sum = 0.0, norm_sum = 0.0;
   std::vector<double> x(static_cast<std::size_t>(numbering.owned_rows()));

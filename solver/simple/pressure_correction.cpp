@@ -6,7 +6,8 @@
 //      symmetric positive (semi-)definite: CG with algebraic multigrid (GAMG or BoomerAMG); a
 //      closed domain has the constant null space, removed in the solve.
 //   2. P += α_p p' in fluid cells; u += d (p'_c − p'_n) on unknown faces; exchange the halo.
-// Returns the mass imbalance before the correction, Σ|Σ_faces F_out| / Σ ½ Σ_faces |F|.
+// Returns the mass imbalance before the correction, Σ|Σ_faces F_out| / Σ ½ Σ_faces |F| (at least
+// the flux of the residual velocity scale through every face).
 #include <algorithm>
 #include <cmath>
 
@@ -74,8 +75,10 @@ double GasSolver::correct_pressure(run::FlowState& state) {
   }
 
   const double total_imbalance = layout.comm().sum(imbalance);
-  const double total_throughput = layout.comm().sum(throughput);
-  return total_imbalance <= 1e-300 ? 0.0 : total_imbalance / std::max(total_throughput, 1e-300);
+  // A flow at rest has no throughput: measure against the flux the velocity scale would carry.
+  const double total_throughput =
+      std::max(layout.comm().sum(throughput), m_reference_flux * residual_velocity_scale(state));
+  return total_imbalance <= 1e-300 ? 0.0 : total_imbalance / total_throughput;
 }
 
 }  // namespace bagnold::solver

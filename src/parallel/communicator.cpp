@@ -19,34 +19,25 @@ Communicator::Communicator(MPI_Comm comm) : m_comm(comm) {
   MPI_Comm_size(comm, &m_size);
 }
 
-double Communicator::sum(double x) const {
-  double out = 0;
-  MPI_Allreduce(&x, &out, 1, MPI_DOUBLE, MPI_SUM, m_comm);
+namespace {
+template <class T>
+T all_reduce(T x, MPI_Datatype type, MPI_Op op, MPI_Comm comm) {
+  T out{};
+  MPI_Allreduce(&x, &out, 1, type, op, comm);
   return out;
 }
+}  // namespace
 
+double Communicator::sum(double x) const { return all_reduce(x, MPI_DOUBLE, MPI_SUM, m_comm); }
 std::int64_t Communicator::sum(std::int64_t x) const {
-  std::int64_t out = 0;
-  MPI_Allreduce(&x, &out, 1, MPI_INT64_T, MPI_SUM, m_comm);
-  return out;
+  return all_reduce(x, MPI_INT64_T, MPI_SUM, m_comm);
 }
-
-double Communicator::max(double x) const {
-  double out = 0;
-  MPI_Allreduce(&x, &out, 1, MPI_DOUBLE, MPI_MAX, m_comm);
-  return out;
-}
-
+double Communicator::max(double x) const { return all_reduce(x, MPI_DOUBLE, MPI_MAX, m_comm); }
 std::int64_t Communicator::max(std::int64_t x) const {
-  std::int64_t out = 0;
-  MPI_Allreduce(&x, &out, 1, MPI_INT64_T, MPI_MAX, m_comm);
-  return out;
+  return all_reduce(x, MPI_INT64_T, MPI_MAX, m_comm);
 }
-
 std::int64_t Communicator::min(std::int64_t x) const {
-  std::int64_t out = 0;
-  MPI_Allreduce(&x, &out, 1, MPI_INT64_T, MPI_MIN, m_comm);
-  return out;
+  return all_reduce(x, MPI_INT64_T, MPI_MIN, m_comm);
 }
 
 void Communicator::sum_in_place(std::vector<double>& values) const {

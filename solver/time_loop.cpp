@@ -31,6 +31,7 @@ RunSummary run_time_loop(const TimeLoopContext& context, GasSolver& solver, run:
   long step = start_step;
   double dt = dt_start;
   run::FlowState old = state;
+  run::FlowState failed = state;  // the last iterate of a step that did not converge
   const double end = run.end_time;
   const double tiny = 1e-12 * std::max(1.0, end);
 
@@ -42,6 +43,7 @@ RunSummary run_time_loop(const TimeLoopContext& context, GasSolver& solver, run:
     const StepResult result = solver.advance(state, old, dt_try);
     summary.outer_iterations += result.iterations;
     if (!result.converged) {
+      failed = state;
       state = old;
       ++summary.redone_steps;
       dt = 0.5 * dt_try;
@@ -49,11 +51,21 @@ RunSummary run_time_loop(const TimeLoopContext& context, GasSolver& solver, run:
                               "outer iterations); dt -> {:.3g} s, step redone",
                               time, result.residuals.largest(), result.iterations, dt));
       if (dt < run.dt_min) {
+        // Stop cleanly: the failed iterate goes to diagnostic.h5, the message says where.
+        const auto& r = result.residuals;
+        const double values[4] = {r.momentum[0], r.momentum[1], r.momentum[2], r.continuity};
+        int worst = 0;
+        for (int e = 1; e < 4; ++e)
+          if (!(values[e] <= values[worst])) worst = e;
+        const char* names[4] = {"x momentum", "y momentum", "z momentum", "continuity"};
+        const auto where = solver.worst_cell(worst);
+        const std::string diagnostic = context.output.write_diagnostic(failed, time, step, dt_try);
         summary.failure = fmt::format(
-            "the time step fell below run.dt_min = {:.3g} s at t = {:.6g} s (largest residual "
-            "{:.3g}: momentum x {:.3g}, y {:.3g}, z {:.3g}, continuity {:.3g})",
-            run.dt_min, time, result.residuals.largest(), result.residuals.momentum[0],
-            result.residuals.momentum[1], result.residuals.momentum[2], result.residuals.continuity);
+            "the time step fell below run.dt_min = {:.3g} s at t = {:.6g} s; the {} equation "
+            "diverged (normalized residual {:.3g}), worst in cell ({}, {}, {}) at ({:.4g}, {:.4g}, "
+            "{:.4g}) m; the failed iterate is in {}",
+            run.dt_min, time, names[worst], values[worst], where.cell[0], where.cell[1],
+            where.cell[2], where.position[0], where.position[1], where.position[2], diagnostic);
         break;
       }
       continue;

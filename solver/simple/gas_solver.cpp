@@ -74,6 +74,22 @@ double GasSolver::residual_velocity_scale(const run::FlowState& state) const {
   return std::max(layout.comm().max(largest), 1e-3 * m_reference_speed);
 }
 
+CellLocation GasSolver::worst_cell(int equation) const {
+  const auto& layout = m_domain.layout;
+  const auto e = static_cast<std::size_t>(equation);
+  struct {
+    double value;
+    int rank;
+  } mine{m_worst_local[e] >= 0 ? m_worst_value[e] : -1.0, layout.comm().rank()}, worst{};
+  MPI_Allreduce(&mine, &worst, 1, MPI_DOUBLE_INT, MPI_MAXLOC, layout.comm().get());
+  std::int64_t natural = m_worst_local[e] >= 0 ? layout.natural(m_worst_local[e]) : 0;
+  MPI_Bcast(&natural, 1, MPI_INT64_T, worst.rank, layout.comm().get());
+  CellLocation where;
+  where.cell = m_domain.grid.index3(natural);
+  where.position = m_domain.grid.centre(where.cell);
+  return where;
+}
+
 double GasSolver::face_area(int local, int d) const {
   return width(local, (d + 1) % 3) * width(local, (d + 2) % 3);
 }

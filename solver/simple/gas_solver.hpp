@@ -30,6 +30,12 @@ struct Residuals {
   double largest() const;
 };
 
+// Where an equation's residual is largest: for the message when a run cannot continue.
+struct CellLocation {
+  grid::Index3 cell{0, 0, 0};
+  std::array<double, 3> position{0, 0, 0};  // cell centre [m]
+};
+
 struct StepResult {
   bool converged = false;
   int iterations = 0;
@@ -50,6 +56,10 @@ class GasSolver {
   void set_momentum_source(int d, std::vector<double> source) {
     m_source[static_cast<std::size_t>(d)] = std::move(source);
   }
+
+  // Collective: the cell with the largest residual of equation e (0–2 momentum x–z, 3
+  // continuity) in the last outer iteration.
+  CellLocation worst_cell(int equation) const;
 
   // Net mass flux [kg/s] out through each boundary region (monitor).
   std::vector<double> boundary_mass_flux(const run::FlowState& state) const;
@@ -80,6 +90,8 @@ class GasSolver {
   std::unique_ptr<LinearSystem> m_pressure_system;
   std::array<std::vector<double>, 3> m_d;  // d = A / a_P (relaxed) of each unknown face velocity
   std::array<std::vector<double>, 3> m_source;  // optional momentum sources [N/m³]
+  std::array<double, 4> m_worst_value{0, 0, 0, 0};  // largest row residual per equation
+  std::array<int, 4> m_worst_local{-1, -1, -1, -1};  // and its local cell
   double m_reference_speed = 1.0;  // [m/s]
   double m_reference_flux = 0.0;   // [kg/(s (m/s))]: ρ Σ_cells ½ Σ_faces A, per unit speed
 };

@@ -37,6 +37,8 @@ double GasSolver::predict_momentum(int d, run::FlowState& state, const run::Flow
   const double velocity_scale = residual_velocity_scale(state);
 
   double residual_sum = 0.0, norm_sum = 0.0;
+  m_worst_value[ud] = 0.0;
+  m_worst_local[ud] = -1;
   std::vector<double> x(static_cast<std::size_t>(numbering.owned_rows()));
   for (std::size_t row = 0; row < numbering.owned_locals.size(); ++row) {
     const int l = numbering.owned_locals[row];
@@ -127,7 +129,12 @@ double GasSolver::predict_momentum(int d, run::FlowState& state, const run::Flow
     b += a_transient * u_old[static_cast<std::size_t>(l)];
 
     const double u_p = at(l);
-    residual_sum += std::abs(b + neighbours_u - a_p * u_p);
+    const double row_residual = std::abs(b + neighbours_u - a_p * u_p);
+    residual_sum += row_residual;
+    if (!(row_residual <= m_worst_value[ud])) {  // NaN is the worst
+      m_worst_value[ud] = std::isnan(row_residual) ? INFINITY : row_residual;
+      m_worst_local[ud] = l;
+    }
     norm_sum += a_p * velocity_scale;
 
     const double a_relaxed = a_p / alpha;

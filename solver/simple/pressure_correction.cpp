@@ -20,6 +20,8 @@ double GasSolver::correct_pressure(run::FlowState& state) {
   const double rho = m_deck.gas.density;
   const auto& numbering = *m_pressure_numbering;
   double imbalance = 0.0, throughput = 0.0;
+  m_worst_value[3] = 0.0;
+  m_worst_local[3] = -1;
 
   for (const int l : numbering.owned_locals) {
     double a_p = 0.0, b = 0.0;
@@ -46,6 +48,10 @@ double GasSolver::correct_pressure(run::FlowState& state) {
       }
     }
     imbalance += std::abs(b);
+    if (!(std::abs(b) <= m_worst_value[3])) {
+      m_worst_value[3] = std::isnan(b) ? INFINITY : std::abs(b);
+      m_worst_local[3] = l;
+    }
     columns[count] = numbering.global[static_cast<std::size_t>(l)];
     values[count++] = a_p;
     m_pressure_system->set_row(numbering.global[static_cast<std::size_t>(l)], columns, values, count, b);

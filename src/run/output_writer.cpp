@@ -47,6 +47,14 @@ std::string find_snapshot(const std::string& file_or_directory) {
   return last;
 }
 
+std::string OutputWriter::write_diagnostic(const FlowState& state, double time, long step,
+                                           double dt) {
+  const std::string path = (fs::path(m_directory) / "diagnostic.h5").string();
+  io::write_snapshot(path, m_domain.layout, m_domain.flags, state.views(),
+                     {time, step, dt, m_title + " (diagnostic: a step that failed)", dt});
+  return path;
+}
+
 void OutputWriter::resume(double time) {
   m_index.clear();
   for (std::size_t n = 0;; ++n) {

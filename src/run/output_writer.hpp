@@ -25,6 +25,8 @@ class OutputWriter {
   bool snapshot_due(double time) const { return time >= m_next_time - 1e-12 * (1.0 + time); }
   // Collective: writes a snapshot of `state` and updates the index; returns its path.
   std::string write(const FlowState& state, double time, long step, double dt, double dt_next = 0);
+  // Collective: the state of a failed step, as diagnostic.h5 (not in the index); returns its path.
+  std::string write_diagnostic(const FlowState& state, double time, long step, double dt);
   // For a restart at `time`: keeps the directory's snapshots up to that time in the index (later
   // ones will be overwritten) and schedules the next snapshot after it. Collective.
   void resume(double time);

@@ -209,7 +209,7 @@ void write_snapshot(const std::string& path, const parallel::Layout& layout,
   const std::string temporary = path + ".tmp";
   const auto& comm = layout.comm();
   const Placement placement = place_cells(layout, flags, false);
-  {
+  try {
     File file = open_parallel(temporary, comm.get(), true);
     if (file.get() < 0) throw Hdf5Error("cannot create snapshot file " + temporary);
     write_attribute(file.get(), "time", info.time);
@@ -250,6 +250,10 @@ void write_snapshot(const std::string& path, const parallel::Layout& layout,
       transfer_points(bs.get(), H5T_NATIVE_DOUBLE, placement.boundary_coordinates, 1, buffer.data(), true);
     }
     check_status(H5Fflush(file.get(), H5F_SCOPE_GLOBAL), "H5Fflush");
+  } catch (const Hdf5Error& e) {
+    // The final name is never touched: earlier snapshots stay as they were.
+    if (comm.is_root()) std::remove(temporary.c_str());
+    throw Hdf5Error("cannot write the snapshot " + path + " (" + e.what() + "; disk full?)");
   }
   comm.barrier();
   if (comm.is_root() && std::rename(temporary.c_str(), path.c_str()) != 0)

@@ -48,7 +48,11 @@ void write_file_atomically(const std::string& path, const std::string& text) {
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
     out << text;
     out.flush();
-    if (!out) throw Hdf5Error("cannot write " + temporary);
+    if (!out) {
+      out.close();
+      std::remove(temporary.c_str());
+      throw Hdf5Error("cannot write " + path + " (disk full?)");
+    }
   }
   if (std::rename(temporary.c_str(), path.c_str()) != 0)
     throw Hdf5Error("cannot rename " + temporary + " to " + path);

@@ -65,6 +65,11 @@ void LinearSystem::set_row(std::int64_t row, const std::int64_t* columns, const 
   petsc_check(VecSetValue(m_rhs.get(), r, rhs, INSERT_VALUES), "VecSetValue");
 }
 
+void LinearSystem::reuse_preconditioner(bool reuse) {
+  petsc_check(KSPSetReusePreconditioner(m_ksp.get(), reuse ? PETSC_TRUE : PETSC_FALSE),
+              "KSPSetReusePreconditioner");
+}
+
 SolveReport LinearSystem::solve(std::vector<double>& x) {
   petsc_check(MatAssemblyBegin(m_matrix.get(), MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
   petsc_check(MatAssemblyEnd(m_matrix.get(), MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");

@@ -37,6 +37,9 @@ class LinearSystem {
   // One row: global column indices (duplicates are summed) and values; and its right-hand side.
   void set_row(std::int64_t row, const std::int64_t* columns, const double* values, int count,
                double rhs);
+  // Keep the preconditioner built for an earlier matrix (e.g. within one time step, where the
+  // pressure matrix changes little between outer iterations) instead of rebuilding it.
+  void reuse_preconditioner(bool reuse);
   // Solves with `x` (owned entries, in row order) as the initial guess; x is overwritten.
   SolveReport solve(std::vector<double>& x);
 

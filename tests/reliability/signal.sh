@@ -9,7 +9,11 @@ rm -rf "$work"; mkdir -p "$work"
 $bagnold run $deck --set run.end_time=1000 --set output.snapshot_interval=1000 \
   --set output.progress=never --set output.directory=$work/run > $work/run.log 2>&1 &
 pid=$!
-sleep 3
+# Wait until the time loop runs (the monitor has rows after t = 0), at most 120 s.
+for i in $(seq 1 240); do
+  [ -f $work/run/monitor.csv ] && [ "$(wc -l < $work/run/monitor.csv)" -ge 4 ] && break
+  sleep 0.5
+done
 kill -s "$signal" $pid
 wait $pid
 code=$?

@@ -93,6 +93,7 @@ class GasSolver {
   std::array<double, 4> m_worst_value{0, 0, 0, 0};  // largest row residual per equation
   std::array<int, 4> m_worst_local{-1, -1, -1, -1};  // and its local cell
   double m_reference_speed = 1.0;  // [m/s]
+  double m_velocity_scale = 1.0;   // residual_velocity_scale of the current outer iteration
   double m_reference_flux = 0.0;   // [kg/(s (m/s))]: ρ Σ_cells ½ Σ_faces A, per unit speed
 };
 

@@ -10,7 +10,7 @@
 //   3. Under-relaxation (Patankar): a_P ← a_P / α_u, b ← b + (1 − α_u) a_P u_P*.
 //   4. d = A / a_P for the pressure correction; solve; exchange the halo.
 //   (SIMPLEC, the default: d = A / (a_P − Σ a_nb), with no pressure under-relaxation needed.)
-// Returns Σ|b + Σ a_nb u_nb − a_P u_P| / Σ a_P U before the solve (U: residual_velocity_scale).
+// Returns Σ|b + Σ a_nb u_nb − a_P u_P| / Σ a_P U before the solve (U: the step's residual velocity scale).
 #include <algorithm>
 #include <cmath>
 
@@ -34,7 +34,7 @@ double GasSolver::predict_momentum(int d, run::FlowState& state, const run::Flow
   auto& d_coefficient = m_d[ud];
   auto at = [&](int local) { return u[static_cast<std::size_t>(local)]; };
   if (numbering.total_rows == 0) return 0.0;  // e.g. no fluid faces along d
-  const double velocity_scale = residual_velocity_scale(state);
+  const double velocity_scale = m_velocity_scale;
 
   double residual_sum = 0.0, norm_sum = 0.0;
   m_worst_value[ud] = 0.0;

@@ -83,7 +83,7 @@ double GasSolver::correct_pressure(run::FlowState& state) {
   const double total_imbalance = layout.comm().sum(imbalance);
   // A flow at rest has no throughput: measure against the flux the velocity scale would carry.
   const double total_throughput =
-      std::max(layout.comm().sum(throughput), m_reference_flux * residual_velocity_scale(state));
+      std::max(layout.comm().sum(throughput), m_reference_flux * m_velocity_scale);
   return total_imbalance <= 1e-300 ? 0.0 : total_imbalance / total_throughput;
 }
 

@@ -21,18 +21,27 @@ std::vector<std::string> FlowState::field_names() {
   return names;
 }
 
-std::vector<std::vector<double>*> FlowState::fields() {
-  std::vector<std::vector<double>*> out = {&solids_fraction, &gas_fraction, &gas_pressure,
-                                           &solids_pressure, &granular_temperature};
-  for (auto& v : gas_velocity) out.push_back(&v);
-  for (auto& v : solids_velocity) out.push_back(&v);
+// Every field in snapshot order, as pointers to mutable or const vectors.
+template <class Pointer, class State>
+std::vector<Pointer> all_fields(State& s) {
+  std::vector<Pointer> out = {&s.solids_fraction, &s.gas_fraction, &s.gas_pressure,
+                              &s.solids_pressure, &s.granular_temperature};
+  for (auto& v : s.gas_velocity) out.push_back(&v);
+  for (auto& v : s.solids_velocity) out.push_back(&v);
   return out;
+}
+
+std::vector<std::vector<double>*> FlowState::fields() {
+  return all_fields<std::vector<double>*>(*this);
+}
+
+std::vector<const std::vector<double>*> FlowState::fields() const {
+  return all_fields<const std::vector<double>*>(*this);
 }
 
 std::vector<io::FieldView> FlowState::views() const {
   const auto names = field_names();
-  auto& self = const_cast<FlowState&>(*this);  // fields() only hands out pointers
-  const auto all = self.fields();
+  const auto all = fields();
   std::vector<io::FieldView> out;
   for (std::size_t f = 0; f < all.size(); ++f) {
     io::Centering centering = io::Centering::cell;

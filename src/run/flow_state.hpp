@@ -25,8 +25,9 @@ struct FlowState {
 
   // Every field, named as in the snapshots (docs/output.md).
   std::vector<io::FieldView> views() const;
-  // The same fields, writable, in the same order (for restart).
+  // The same fields, in the same order (writable ones for restart).
   std::vector<std::vector<double>*> fields();
+  std::vector<const std::vector<double>*> fields() const;
   static std::vector<std::string> field_names();
 };
 

@@ -179,6 +179,17 @@ class PostProcessing(unittest.TestCase):
         self.assertRegex(out, r"end 1\.0000 s|end 0\.99\d\d s")
         self.assertIn("--until 1.0", out.split("\n")[0])
 
+    def test_discharge_rate_torn_last_line(self):
+        """A running job's monitor may end in a half-written row: it is skipped."""
+        torn = os.path.join(self.tmp, "torn_run")
+        os.makedirs(torn, exist_ok=True)
+        shutil.copy(os.path.join(self.run_dir, "monitor.csv"), torn)
+        with open(os.path.join(torn, "monitor.csv"), "a") as f:
+            f.write("1.5011,0.0012,4,1e-0")
+        code, out, err = run("discharge-rate", torn)
+        self.assertEqual(code, 0, err)
+        self.assertEqual(out.rstrip().split("\n")[-1], self.discharge().rstrip().split("\n")[-1])
+
     def test_discharge_rate_bad_inputs(self):
         missing = os.path.join(self.tmp, "no_such_run")
         self.assert_fails("discharge-rate", missing, message="does not exist")

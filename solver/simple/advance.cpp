@@ -16,6 +16,7 @@ StepResult GasSolver::advance(run::FlowState& state, const run::FlowState& old, 
     // the later outer iterations (the matrix changes only through d); it dominated the run time.
     m_pressure_system->reuse_preconditioner(iteration > 1);
     m_velocity_scale = residual_velocity_scale(state);
+    evaluate_drag(state);
     for (int d = 0; d < 3; ++d)
       result.residuals.momentum[static_cast<std::size_t>(d)] = predict_momentum(d, state, old, dt);
     result.residuals.continuity = correct_pressure(state);

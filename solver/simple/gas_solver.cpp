@@ -54,6 +54,9 @@ GasSolver::GasSolver(const deck::Deck& deck, const parallel::Domain& domain)
   for (int l = 0; l < layout.owned_fluid_count(); ++l)
     for (int d = 0; d < 3; ++d) faces_area += face_area(l, d);  // ½ Σ over the 6 faces
   m_reference_flux = deck.gas.density * layout.comm().sum(faces_area);
+  m_beta.assign(local, 0.0);
+  if (deck.solids.enabled)
+    m_drag = models::drag_registry().create(deck.models.drag.name, deck.models.drag.coefficients);
   m_pressure_numbering = std::make_unique<UnknownNumbering>(
       layout, [&](int l) { return layout.kind(l) == grid::CellKind::fluid; });
   KrylovSettings pressure;
@@ -90,6 +93,45 @@ CellLocation GasSolver::worst_cell(int equation) const {
   return where;
 }
 
+double GasSolver::face_fraction(const run::FlowState& state, int local, int d) const {
+  const auto& eps = state.gas_fraction;
+  const int n = m_domain.layout.neighbour(local, 2 * d + 1);
+  if (n < 0) return eps[static_cast<std::size_t>(local)];
+  const double wc = width(local, d), wn = width(n, d);
+  return (eps[static_cast<std::size_t>(local)] * wn + eps[static_cast<std::size_t>(n)] * wc) /
+         (wc + wn);
+}
+
+void GasSolver::evaluate_drag(const run::FlowState& state) {
+  if (!m_drag) return;
+  const auto& layout = m_domain.layout;
+  std::vector<double> fraction, slip;
+  std::vector<int> cells;
+  for (int l = 0; l < layout.local_count(); ++l) {
+    m_beta[static_cast<std::size_t>(l)] = 0.0;
+    if (layout.kind(l) != grid::CellKind::fluid) continue;
+    double slip2 = 0.0;  // |u_g − u_s|² at the centre, from the two faces of each direction
+    for (int d = 0; d < 3; ++d) {
+      const int minus = layout.neighbour(l, 2 * d);
+      auto centred = [&](const std::vector<double>& u) {
+        return 0.5 * (u[static_cast<std::size_t>(l)] + (minus >= 0 ? u[static_cast<std::size_t>(minus)] : 0.0));
+      };
+      const double relative = centred(state.gas_velocity[static_cast<std::size_t>(d)]) -
+                              centred(state.solids_velocity[static_cast<std::size_t>(d)]);
+      slip2 += relative * relative;
+    }
+    cells.push_back(l);
+    fraction.push_back(state.gas_fraction[static_cast<std::size_t>(l)]);
+    slip.push_back(std::sqrt(slip2));
+  }
+  std::vector<double> beta(cells.size());
+  const models::DragProperties properties{m_deck.gas.density, m_deck.gas.viscosity,
+                                          m_deck.solids.material.diameter,
+                                          m_deck.solids.material.density};
+  m_drag->evaluate(properties, {fraction, slip}, beta);
+  for (std::size_t i = 0; i < cells.size(); ++i) m_beta[static_cast<std::size_t>(cells[i])] = beta[i];
+}
+
 double GasSolver::face_area(int local, int d) const {
   return width(local, (d + 1) % 3) * width(local, (d + 2) % 3);
 }
@@ -120,7 +162,8 @@ std::vector<double> GasSolver::boundary_mass_flux(const run::FlowState& state) c
       const int d = parallel::face_direction(face);
       const int owner = parallel::face_sign(face) > 0 ? l : m;
       const double u = state.gas_velocity[static_cast<std::size_t>(d)][static_cast<std::size_t>(owner)];
-      flux[static_cast<std::size_t>(layout.region(m))] += parallel::face_sign(face) * rho * u * face_area(l, d);
+      flux[static_cast<std::size_t>(layout.region(m))] +=
+          parallel::face_sign(face) * rho * face_fraction(state, owner, d) * u * face_area(l, d);
     }
   }
   layout.comm().sum_in_place(flux);

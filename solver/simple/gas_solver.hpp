@@ -1,7 +1,10 @@
 #pragma once
-// The single-phase incompressible gas solver on the staggered grid: SIMPLE outer iterations
-// within an implicit-Euler time step (DESIGN.md, "Equations and algorithm", steps 2, 3 and 5
-// without the solids). The two-fluid solver extends it with volume fractions and drag.
+// The incompressible gas solver on the staggered grid: SIMPLE outer iterations within an
+// implicit-Euler time step (DESIGN.md, "Equations and algorithm", steps 2, 3 and 5). The gas
+// occupies the fraction ε_g of each cell and feels the solids through drag (as MFIX's gas phase):
+//   ∂(ε_g ρ_g u)/∂t + ∇·(ε_g ρ_g u u) = −ε_g ∇P + ∇·(ε_g μ_g ∇u) + ε_g ρ_g g − β (u − u_s),
+//   ∇·(ε_g ρ_g u) = 0  (ε_g frozen: solids.momentum = false, or no solids: ε_g = 1, β = 0).
+// The two-fluid solver (issue 4) adds the solids momentum and the volume-fraction correction.
 //
 // One time step (advance.cpp):
 //   repeat until every normalized residual < numerics.tolerance:
@@ -17,6 +20,7 @@
 #include "solver/convection_limiter.hpp"
 #include "solver/petsc/linear_system.hpp"
 #include "solver/unknown_numbering.hpp"
+#include "models/drag/drag_law.hpp"
 #include "solver/velocity_faces.hpp"
 #include "src/deck/deck.hpp"
 #include "src/parallel/domain.hpp"
@@ -75,6 +79,12 @@ class GasSolver {
   // that a fluid at rest is judged against a meaningful scale rather than round-off.
   double residual_velocity_scale(const run::FlowState& state) const;
 
+  // ε_g on the face of `local` in the + direction d (linear between the two cell centres).
+  double face_fraction(const run::FlowState& state, int local, int d) const;
+  // Step 0 of an outer iteration: the drag coefficient β at cell centres from the current
+  // velocities (nothing without solids).
+  void evaluate_drag(const run::FlowState& state);
+
   double width(int local, int d) const { return m_width[static_cast<std::size_t>(local) * 3 + static_cast<std::size_t>(d)]; }
   double face_area(int local, int d) const;  // area of the cell's face normal to d
 
@@ -92,6 +102,8 @@ class GasSolver {
   std::array<std::vector<double>, 3> m_source;  // optional momentum sources [N/m³]
   std::array<double, 4> m_worst_value{0, 0, 0, 0};  // largest row residual per equation
   std::array<int, 4> m_worst_local{-1, -1, -1, -1};  // and its local cell
+  std::unique_ptr<models::DragLaw> m_drag;  // null without solids
+  std::vector<double> m_beta;                // β [kg/(m³ s)] per local cell
   double m_reference_speed = 1.0;  // [m/s]
   double m_velocity_scale = 1.0;   // residual_velocity_scale of the current outer iteration
   double m_reference_flux = 0.0;   // [kg/(s (m/s))]: ρ Σ_cells ½ Σ_faces A, per unit speed

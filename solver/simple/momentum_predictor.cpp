@@ -6,9 +6,10 @@
 //        D  μ A / δ, with δ the distance to the neighbour (half a cell to a wall);
 //        a_nb = D + max(−F, 0),  a_P += D + max(F, 0)         (first-order upwind, implicit);
 //        b −= F (φ_f^TVD − φ_upwind)                           (TVD by deferred correction).
-//   2. Sources: (P_c − P_n) A, ρ g_d V, and the implicit-Euler term ρ V / dt (u_P − u_P^old).
+//   2. Sources: ε_g (P_c − P_n) A, ε_g ρ g_d V, drag β V (u_s − u_P) (implicit in u_P), and the
+//      implicit-Euler term ε_g ρ V / dt (u_P − u_P^old). Fluxes and diffusion carry ε_g too.
 //   3. Under-relaxation (Patankar): a_P ← a_P / α_u, b ← b + (1 − α_u) a_P u_P*.
-//   4. d = A / a_P for the pressure correction; solve; exchange the halo.
+//   4. d = ε_g A / a_P for the pressure correction; solve; exchange the halo.
 //   (SIMPLEC, the default: d = A / (a_P − Σ a_nb), with no pressure under-relaxation needed.)
 // Returns Σ|b + Σ a_nb u_nb − a_P u_P| / Σ a_P U before the solve (U: the step's residual velocity scale).
 #include <algorithm>
@@ -46,6 +47,8 @@ double GasSolver::predict_momentum(int d, run::FlowState& state, const run::Flow
     const double half_c = 0.5 * width(l, d), half_n = 0.5 * width(n, d);
     const double area_d = face_area(l, d);
     const double volume = (half_c + half_n) * area_d;
+    const double fraction = face_fraction(state, l, d);  // ε_g at this face velocity
+    const auto& eps = state.gas_fraction;
     double a_p = 0.0, b = 0.0, neighbours_u = 0.0, neighbours_a = 0.0;
     std::int64_t columns[7];
     double values[7];
@@ -59,22 +62,24 @@ double GasSolver::predict_momentum(int d, run::FlowState& state, const run::Flow
       if (e == d) {
         // The control-volume face at the centre of n (s > 0) or of c (s < 0).
         const bool has_far = link.kind == LinkKind::unknown || link.kind == LinkKind::fixed;
-        flux_out = s * rho * area_d * 0.5 * (at(l) + (has_far ? at(link.local) : at(l)));
-        diffusion = has_far ? mu * area_d / (s > 0 ? width(n, d) : width(l, d)) : 0.0;
+        const double centre_fraction = eps[static_cast<std::size_t>(s > 0 ? n : l)];
+        flux_out = s * rho * centre_fraction * area_d * 0.5 * (at(l) + (has_far ? at(link.local) : at(l)));
+        diffusion = has_far ? fraction * mu * area_d / (s > 0 ? width(n, d) : width(l, d)) : 0.0;
       } else {
         // The face between the owning cells' faces along e: half of c's and half of n's.
         const int t = 3 - d - e;
         const auto& v = state.gas_velocity[static_cast<std::size_t>(e)];
         const int cv = s > 0 ? l : layout.neighbour(l, face);
         const int nv = s > 0 ? n : layout.neighbour(n, face);
-        const double vc = cv >= 0 ? v[static_cast<std::size_t>(cv)] : 0.0;
-        const double vn = nv >= 0 ? v[static_cast<std::size_t>(nv)] : 0.0;
+        // Mass flux through those half faces: ε_g on each of them.
+        const double vc = cv >= 0 ? v[static_cast<std::size_t>(cv)] * face_fraction(state, cv, e) : 0.0;
+        const double vn = nv >= 0 ? v[static_cast<std::size_t>(nv)] * face_fraction(state, nv, e) : 0.0;
         flux_out = s * rho * (vc * half_c + vn * half_n) * width(l, t);
         const double area = (half_c + half_n) * width(l, t);
         if (link.kind == LinkKind::wall) {
-          diffusion = mu * area / (0.5 * width(l, e));
+          diffusion = fraction * mu * area / (0.5 * width(l, e));
         } else if (link.kind != LinkKind::zero_gradient) {
-          diffusion = mu * area / (0.5 * (width(l, e) + width(link.local, e)));
+          diffusion = fraction * mu * area / (0.5 * (width(l, e) + width(link.local, e)));
         }
       }
 
@@ -121,12 +126,17 @@ double GasSolver::predict_momentum(int d, run::FlowState& state, const run::Flow
       }
     }
 
-    b += (pressure[static_cast<std::size_t>(l)] - pressure[static_cast<std::size_t>(n)]) * area_d;
-    b += rho * m_deck.physics.gravity[ud] * volume;
+    b += fraction * (pressure[static_cast<std::size_t>(l)] - pressure[static_cast<std::size_t>(n)]) * area_d;
+    b += fraction * rho * m_deck.physics.gravity[ud] * volume;
     if (!m_source[ud].empty()) b += m_source[ud][static_cast<std::size_t>(l)] * volume;
-    const double a_transient = rho * volume / dt;
+    const double a_transient = fraction * rho * volume / dt;
     a_p += a_transient;
     b += a_transient * u_old[static_cast<std::size_t>(l)];
+    // Drag towards the solids velocity, implicit in u: β (u_s − u) V, β interpolated to the face.
+    const double beta = (m_beta[static_cast<std::size_t>(l)] * half_n + m_beta[static_cast<std::size_t>(n)] * half_c) /
+                        (half_c + half_n);
+    a_p += beta * volume;
+    b += beta * volume * state.solids_velocity[ud][static_cast<std::size_t>(l)];
 
     const double u_p = at(l);
     const double row_residual = std::abs(b + neighbours_u - a_p * u_p);
@@ -141,7 +151,7 @@ double GasSolver::predict_momentum(int d, run::FlowState& state, const run::Flow
     // SIMPLEC drops the neighbours' corrections consistently: d = A / (a_P − Σ a_nb).
     const double a_for_d = m_simplec && a_relaxed - neighbours_a > 1e-12 * a_relaxed
                                ? a_relaxed - neighbours_a : a_relaxed;
-    d_coefficient[static_cast<std::size_t>(l)] = area_d / a_for_d;
+    d_coefficient[static_cast<std::size_t>(l)] = fraction * area_d / a_for_d;
     columns[count] = numbering.global[static_cast<std::size_t>(l)];
     values[count++] = a_relaxed;
     m_momentum_system[ud]->set_row(numbering.global[static_cast<std::size_t>(l)], columns, values,

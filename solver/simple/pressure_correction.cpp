@@ -1,8 +1,8 @@
 // Step 2 of the outer iteration: the pressure correction (SIMPLE).
 //
-//   1. With u = u* + d (p'_c − p'_n) on every unknown face (d = A / a_P from step 1) and p' = 0
-//      in pressure-boundary cells, continuity in each fluid cell P becomes
-//        Σ_faces ρ A d (p'_P − p'_nb) = −Σ_faces ρ A u*_out,
+//   1. With u = u* + d (p'_c − p'_n) on every unknown face (d = ε_g A / a_P from step 1) and
+//      p' = 0 in pressure-boundary cells, continuity in each fluid cell P becomes
+//        Σ_faces ρ ε_g A d (p'_P − p'_nb) = −Σ_faces ρ ε_g A u*_out,
 //      symmetric positive (semi-)definite: CG with algebraic multigrid (GAMG or BoomerAMG); a
 //      closed domain has the constant null space, removed in the solve.
 //   2. P += α_p p' in fluid cells; u += d (p'_c − p'_n) on unknown faces; exchange the halo.
@@ -35,7 +35,7 @@ double GasSolver::correct_pressure(run::FlowState& state) {
       const int owner = s > 0 ? l : m;  // the cell that owns this face's velocity
       if (owner < 0) continue;
       const auto uo = static_cast<std::size_t>(owner);
-      const double area = face_area(l, d);
+      const double area = face_fraction(state, owner, d) * face_area(l, d);  // open to the gas
       const double flux_out = s * rho * area * state.gas_velocity[static_cast<std::size_t>(d)][uo];
       b -= flux_out;
       throughput += 0.5 * std::abs(flux_out);

@@ -100,7 +100,10 @@ int run_command(const DeckArguments& args) {
                         comm.is_root(), start.snapshot.empty() ? nullptr : &start.time);
     solver::PetscSession petsc(nullptr, nullptr);
     solver::PetscSession::add_options(args.petsc_options);
-    if (deck.solids.enabled) return write_initial_state_only(deck, domain, state, output, monitor);
+    // Moving solids need the two-fluid solver (issue 4); frozen solids (a fixed bed) and gas
+    // alone run with the gas solver.
+    if (deck.solids.enabled && deck.solids.momentum)
+      return write_initial_state_only(deck, domain, state, output, monitor);
 
     solver::GasSolver gas(deck, domain);
     if (start.snapshot.empty()) {

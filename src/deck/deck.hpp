@@ -79,6 +79,7 @@ struct Gas {
 
 struct Solids {
   bool enabled = true;
+  bool momentum = true;  // false: solids frozen as initialized (a fixed bed), as MFIX's MOMENTUM_EQ
   models::Material material;
 };
 

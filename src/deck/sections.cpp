@@ -147,13 +147,16 @@ const Section<models::Material>& solids_section() {
           .doc("k, normal contact stiffness (rheology models: quasi-static pressure)."),
       key(&Material::bond_number, "bond_number").unit("-").init(0.0).at_least(0.0)
           .doc("Bo*, modified Bond number (steady-shear-cohesive)."),
-  }, {"enabled"}};
+  }, {"enabled", "momentum"}};
   return s;
 }
 
 const Section<Solids>& solids_switch_section() {
   static const Section<Solids> s{"solids", "Granular phase", {
       key(&Solids::enabled, "enabled").init(true).doc("false: a single-phase (gas) run."),
+      key(&Solids::momentum, "momentum").init(true)
+          .doc("false: the solids stay as initialized (a fixed bed); the gas flows through them "
+               "with ε_g and drag."),
   }};
   return s;
 }

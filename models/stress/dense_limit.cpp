@@ -60,6 +60,19 @@ Real DenseLimit::quasi_static_pressure(Real phi, double critical_fraction,
          smoothed_power(phi - jamming_fraction(critical_fraction), 2.0 / 3.0, onset_smoothing);
 }
 
+KineticDensePressure kinetic_dense_pressure(double phi, double shear_rate, const Material& material,
+                                            const Dual& pressure_factor,
+                                            const Dual& temperature_factor,
+                                            double critical_fraction, const DenseLimit& dense) {
+  const double d = material.diameter;
+  const double rate_d2 = shear_rate * shear_rate * d * d;
+  const Dual kinetic = material.density * pressure_factor * temperature_factor * rate_d2;
+  const Dual quasi_static = dense.quasi_static_pressure(Dual::variable(phi), critical_fraction,
+                                                        material.stiffness / d, material.friction);
+  return {kinetic.value + quasi_static.value, kinetic.slope + quasi_static.slope,
+          temperature_factor.value * rate_d2, quasi_static.value};
+}
+
 template double smoothed_power(double, double, double);
 template Dual smoothed_power(Dual, double, double);
 template double DenseLimit::capped(double, double) const;

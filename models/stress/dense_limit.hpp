@@ -18,6 +18,8 @@
 #include <vector>
 
 #include "models/coefficients.hpp"
+#include "models/dual.hpp"
+#include "models/material.hpp"
 
 namespace bagnold::models {
 
@@ -50,5 +52,19 @@ struct DenseLimit {
   Real quasi_static_pressure(Real phi, double critical_fraction, double stiffness_over_diameter,
                              double friction) const;
 };
+
+// The pressure that SKT and MKT share: P_s = ρ_s H T + P_qs with T = T_factor (γ̇d)², where the
+// factors H (pressure_factor) and T_factor come as duals in φ so dP_s/dε_s at fixed γ̇ is exact.
+// quasi_static is P_qs, whose yield stress η_s P_qs each model adds as a regularized viscosity.
+struct KineticDensePressure {
+  double pressure = 0.0;             // P_s [Pa]
+  double pressure_derivative = 0.0;  // dP_s/dε_s [Pa]
+  double temperature = 0.0;          // T [m²/s²]
+  double quasi_static = 0.0;         // P_qs [Pa]
+};
+KineticDensePressure kinetic_dense_pressure(double phi, double shear_rate, const Material& material,
+                                            const Dual& pressure_factor,
+                                            const Dual& temperature_factor,
+                                            double critical_fraction, const DenseLimit& dense);
 
 }  // namespace bagnold::models

@@ -97,23 +97,20 @@ void Mkt::evaluate(const Material& material, const SolidsState& in, SolidsStress
       return p;
     }
     const auto s = steady_state(Dual::variable(phi), material, m_constants, m_dense);
-    const double rate_d2 = shear_rate * shear_rate * d * d;
     // Table I: p = ρ_s H T with T = M (γ̇d)².
-    const Dual kinetic_pressure = rho * s.pressure_factor * s.temperature_factor * rate_d2;
-    const Dual quasi_static_pressure = m_dense.quasi_static_pressure(
-        Dual::variable(phi), critical, material.stiffness / d, material.friction);
-    const double temperature = s.temperature_factor.value * rate_d2;
-    p.pressure = kinetic_pressure.value + quasi_static_pressure.value;
-    p.pressure_derivative = kinetic_pressure.slope + quasi_static_pressure.slope;
+    const auto k = kinetic_dense_pressure(phi, shear_rate, material, s.pressure_factor,
+                                          s.temperature_factor, critical, m_dense);
+    const double temperature = k.temperature;
+    p.pressure = k.pressure;
+    p.pressure_derivative = k.pressure_derivative;
     p.granular_temperature = temperature;
     // τ = (τ_s + τ_inertial)/p · p with p ∝ γ̇²: the viscosity (τ/γ̇) is written without dividing
     // by γ̇, so it is exact (and zero) at γ̇ = 0.
     const double kinetic_viscosity = (s.yield_ratio.value + s.inertial_ratio.value) * rho *
                                      s.pressure_factor.value * s.temperature_factor.value * d * d *
                                      shear_rate;
-    p.shear_viscosity = m_limits.capped(
-        kinetic_viscosity +
-        m_limits.rate_independent_viscosity(yield_ratio * quasi_static_pressure.value, shear_rate));
+    p.shear_viscosity =
+        m_limits.with_yield_stress(kinetic_viscosity, yield_ratio * k.quasi_static, shear_rate);
     // The report leaves the bulk viscosity unmodified: Garzó–Dufty's, with e.
     p.bulk_viscosity =
         rho * d * garzo_dufty::bulk_factor(phi, s.radial_distribution.value, material.restitution) *

@@ -20,6 +20,11 @@ struct ViscosityLimits {
 
   // Viscosity of a stress τ that does not vanish with the shear rate.
   double rate_independent_viscosity(double stress, double shear_rate) const;
+  // A kinetic viscosity plus the regularized viscosity of a rate-independent (yield) stress,
+  // capped.
+  double with_yield_stress(double kinetic_viscosity, double yield_stress, double shear_rate) const {
+    return capped(kinetic_viscosity + rate_independent_viscosity(yield_stress, shear_rate));
+  }
   double capped(double viscosity) const {
     return viscosity < max_viscosity ? viscosity : max_viscosity;
   }

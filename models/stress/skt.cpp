@@ -46,22 +46,18 @@ void Skt::evaluate(const Material& material, const SolidsState& in, SolidsStress
       return p;
     }
     const auto s = kinetic_state(Dual::variable(phi), material, m_radial, m_dense);
-    const double rate_d2 = shear_rate * shear_rate * d * d;
     // Eq. 1 with T = (J/K)(γ̇d)²: p = ρ_s H (J/K)(γ̇d)², differentiated at fixed γ̇.
-    const Dual kinetic_pressure = rho * s.pressure_factor * s.temperature_factor * rate_d2;
-    const Dual quasi_static_pressure = m_dense.quasi_static_pressure(
-        Dual::variable(phi), critical, material.stiffness / d, material.friction);
-    const double temperature = s.temperature_factor.value * rate_d2;
-    const double sqrt_temperature = std::sqrt(temperature);
-    p.pressure = kinetic_pressure.value + quasi_static_pressure.value;
-    p.pressure_derivative = kinetic_pressure.slope + quasi_static_pressure.slope;
-    p.granular_temperature = temperature;
+    const auto k = kinetic_dense_pressure(phi, shear_rate, material, s.pressure_factor,
+                                          s.temperature_factor, critical, m_dense);
+    const double sqrt_temperature = std::sqrt(k.temperature);
+    p.pressure = k.pressure;
+    p.pressure_derivative = k.pressure_derivative;
+    p.granular_temperature = k.temperature;
     // Eq. 2: τ = ρ_s d J √T γ̇, so μ_s = ρ_s d J √T; the quasi-static yield stress η_s P_qs is
     // rate independent and gets the regularized viscosity.
     const double kinetic_viscosity = rho * d * s.shear_factor.value * sqrt_temperature;
-    p.shear_viscosity = m_limits.capped(
-        kinetic_viscosity +
-        m_limits.rate_independent_viscosity(yield_ratio * quasi_static_pressure.value, shear_rate));
+    p.shear_viscosity =
+        m_limits.with_yield_stress(kinetic_viscosity, yield_ratio * k.quasi_static, shear_rate);
     p.bulk_viscosity = rho * d * s.bulk_factor.value * sqrt_temperature;
     return p;
   });

@@ -39,6 +39,21 @@ inline double log_log_slope(double x1, double y1, double x2, double y2) {
   return std::log(y2 / y1) / std::log(x2 / x1);
 }
 
+// The rheology models' scaled variables (App. A Sec. III): γ̇ for a scaled shear rate γ̂, the
+// scaled pressure p d/k at γ̂, and its log-log slope between two γ̂.
+inline double rate_for(double scaled_rate, const Material& m) {
+  return scaled_rate * std::sqrt(m.stiffness / (m.density * m.diameter)) / m.diameter;
+}
+inline double scaled_pressure(const models::SolidsStressModel& model, const Material& m,
+                              double phi, double scaled_rate) {
+  return probe(model, m, phi, rate_for(scaled_rate, m)).pressure * m.diameter / m.stiffness;
+}
+inline double scaled_pressure_slope(const models::SolidsStressModel& model, const Material& m,
+                                    double phi, double from, double to) {
+  return log_log_slope(from, scaled_pressure(model, m, phi, from), to,
+                       scaled_pressure(model, m, phi, to));
+}
+
 inline std::unique_ptr<models::SolidsStressModel> make_model(
     const std::string& name, const models::Coefficients& given = {}) {
   return models::stress_registry().create(name, given);

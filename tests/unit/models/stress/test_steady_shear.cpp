@@ -21,19 +21,6 @@ Material sand(double friction) {
   m.friction = friction;
   return m;
 }
-// γ̇ for a scaled shear rate γ̂ (App. A Sec. III).
-double rate_for(double scaled_rate, const Material& m) {
-  return scaled_rate * std::sqrt(m.stiffness / (m.density * m.diameter)) / m.diameter;
-}
-double scaled_pressure(const models::SolidsStressModel& model, const Material& m, double phi,
-                       double scaled_rate) {
-  return probe(model, m, phi, rate_for(scaled_rate, m)).pressure * m.diameter / m.stiffness;
-}
-double slope(const models::SolidsStressModel& model, const Material& m, double phi, double from,
-             double to) {
-  return log_log_slope(from, scaled_pressure(model, m, phi, from), to,
-                       scaled_pressure(model, m, phi, to));
-}
 }  // namespace
 
 TEST(SteadyShear, PressureAtCriticalFractionIsIntermediatePressure) {
@@ -54,10 +41,10 @@ TEST(SteadyShear, ThreeRegimesHaveSlopesZeroHalfAndTwo) {
   const auto model = make_model("steady-shear");
   const Material m = sand(0.5);
   const double phi_c = models::chialvo2012::critical_fraction(0.5);
-  const double quasi_static = slope(*model, m, phi_c + 0.02, 1e-10, 1e-9);
-  const double inertial = slope(*model, m, phi_c - 0.05, 1e-9, 1e-8);
-  const double critical = slope(*model, m, phi_c, 1e-8, 1e-2);
-  const double fast_dilute = slope(*model, m, phi_c - 0.01, 1.0, 10.0);
+  const double quasi_static = scaled_pressure_slope(*model, m, phi_c + 0.02, 1e-10, 1e-9);
+  const double inertial = scaled_pressure_slope(*model, m, phi_c - 0.05, 1e-9, 1e-8);
+  const double critical = scaled_pressure_slope(*model, m, phi_c, 1e-8, 1e-2);
+  const double fast_dilute = scaled_pressure_slope(*model, m, phi_c - 0.01, 1.0, 10.0);
   EXPECT_NEAR(quasi_static, 0.0, 1e-3);  // p_int/p_QS < 1e-4 here
   EXPECT_NEAR(inertial, 2.0, 1e-3);      // p_inert/p_int < 1e-4 here
   EXPECT_NEAR(critical, 0.5, 1e-12);     // exact: p = p_int at φ_c

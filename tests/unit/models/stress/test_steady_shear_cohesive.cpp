@@ -21,18 +21,6 @@ Material powder(double bond_number, double friction = 0.1) {
   m.bond_number = bond_number;
   return m;
 }
-double rate_for(double scaled_rate, const Material& m) {
-  return scaled_rate * std::sqrt(m.stiffness / (m.density * m.diameter)) / m.diameter;
-}
-double scaled_pressure(const models::SolidsStressModel& model, const Material& m, double phi,
-                       double scaled_rate) {
-  return probe(model, m, phi, rate_for(scaled_rate, m)).pressure * m.diameter / m.stiffness;
-}
-double slope(const models::SolidsStressModel& model, const Material& m, double phi, double from,
-             double to) {
-  return log_log_slope(from, scaled_pressure(model, m, phi, from), to,
-                       scaled_pressure(model, m, phi, to));
-}
 }  // namespace
 
 TEST(SteadyShearCohesive, CohesionAddsARateIndependentRegimeBelowCriticalFraction) {
@@ -40,9 +28,9 @@ TEST(SteadyShearCohesive, CohesionAddsARateIndependentRegimeBelowCriticalFractio
   // (cohesive regime), Bagnold (slope 2) at higher γ̂. μ = 0.1, φ = 0.55 < φ_c = 0.614.
   const auto model = make_model("steady-shear-cohesive");
   const Material cohesive = powder(5e-6), dry = powder(0.0);
-  const double low_cohesive = slope(*model, cohesive, 0.55, 1e-8, 1e-7);
-  const double low_dry = slope(*model, dry, 0.55, 1e-8, 1e-7);
-  const double higher_cohesive = slope(*model, cohesive, 0.55, 3e-3, 6e-3);
+  const double low_cohesive = scaled_pressure_slope(*model, cohesive, 0.55, 1e-8, 1e-7);
+  const double low_dry = scaled_pressure_slope(*model, dry, 0.55, 1e-8, 1e-7);
+  const double higher_cohesive = scaled_pressure_slope(*model, cohesive, 0.55, 3e-3, 6e-3);
   EXPECT_NEAR(low_cohesive, 0.0, 1e-3);  // p_inert/p_coh,1 < 1e-5 at γ̂ ≤ 1e-7
   EXPECT_NEAR(low_dry, 2.0, 1e-3);       // without cohesion: inertial
   EXPECT_GT(higher_cohesive, 1.8);       // past γ̂ ~ √Bo*: inertial again (p_inert ≫ p_coh,1)

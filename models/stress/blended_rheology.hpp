@@ -20,6 +20,10 @@
 // Valid: dense flow, φ ≳ 0.5 (App. D Fig. 9 data reach down to φ ≈ 0.5), Hookean contacts.
 // Outside: the formulas stay finite at any φ ≥ 0 and γ̇ ≥ 0; they are not a dilute theory.
 
+#include <string>
+#include <vector>
+
+#include "models/coefficients.hpp"
 #include "models/dual.hpp"
 #include "models/material.hpp"
 #include "models/stress/pointwise.hpp"
@@ -70,5 +74,22 @@ double scaled_shear_stress(double phi, double scaled_rate, double scaled_pressur
 // The point stress of the blended rheology (T undefined: NaN).
 PointStress point_stress(double phi, double shear_rate, const Material& material,
                          const Constants& c, const ViscosityLimits& limits);
+
+// The stress-ratio constants both rheology models declare, with the same defaults (App. A
+// Eqs. 11–12 and Table II; App. D Eqs. 14–15 and Table I). `hard`, `soft` and `table` name the
+// equations and table of the model's own appendix, for the docs.
+std::vector<CoefficientSpec> stress_ratio_specs(const std::string& hard, const std::string& soft,
+                                                const std::string& table);
+
+// Reads those constants into a model's Constants (the fields share their names).
+template <class ModelConstants>
+void read_stress_ratio_constants(const Coefficients& c, ModelConstants& out) {
+  out.transition_inertial_number = real_coefficient(c, "i0");
+  out.hard_rise = real_coefficient(c, "alpha_1");
+  out.hard_exponent = real_coefficient(c, "beta_1");
+  out.transition_shear_rate = real_coefficient(c, "gamma_hat_0");
+  out.soft_drop = real_coefficient(c, "alpha_2");
+  out.soft_exponent = real_coefficient(c, "beta_2");
+}
 
 }  // namespace bagnold::models::blended

@@ -42,15 +42,11 @@ void SteadyShear::evaluate(const Material& material, const SolidsState& in,
 
 namespace {
 Constants read_constants(const Coefficients& c) {
-  return {.inertial = real_coefficient(c, "alpha_inert"),
+  Constants constants{.inertial = real_coefficient(c, "alpha_inert"),
           .intermediate = real_coefficient(c, "alpha_int"),
-          .transition_inertial_number = real_coefficient(c, "i0"),
-          .hard_rise = real_coefficient(c, "alpha_1"),
-          .hard_exponent = real_coefficient(c, "beta_1"),
-          .transition_shear_rate = real_coefficient(c, "gamma_hat_0"),
-          .soft_drop = real_coefficient(c, "alpha_2"),
-          .soft_exponent = real_coefficient(c, "beta_2"),
           .onset_smoothing = real_coefficient(c, "onset_smoothing")};
+  blended::read_stress_ratio_constants(c, constants);
+  return constants;
 }
 
 [[maybe_unused]] const bool registered = stress_registry().add(
@@ -63,21 +59,10 @@ Constants read_constants(const Coefficients& c) {
            real_spec("alpha_int", "-", 0.099, 0.0, 10.0,
                      "α_int [-]: intermediate pressure p d/k = α_int γ̂^{1/2}, App. A Eq. 9, "
                      "Table II."),
-           real_spec("i0", "-", 0.32, 1e-6, 10.0,
-                     "I_0 [-]: transition inertial number of η_hard, App. A Eq. 11, Table II."),
-           real_spec("alpha_1", "-", 0.37, 0.0, 10.0,
-                     "α₁ [-]: rise of η_hard above η_s, App. A Eq. 11, Table II."),
-           real_spec("beta_1", "-", 1.5, 0.1, 10.0,
-                     "β₁ [-]: exponent of η_hard, App. A Eq. 11, Table II."),
-           real_spec("gamma_hat_0", "-", 0.1, 1e-9, 10.0,
-                     "γ̂_0 [-]: transition scaled shear rate of η_soft, App. A Eq. 12, Table II."),
-           real_spec("alpha_2", "-", 0.2, 0.0, 10.0,
-                     "α₂ [-]: softness drop of η, App. A Eq. 12, Table II."),
-           real_spec("beta_2", "-", 1.0, 0.1, 10.0,
-                     "β₂ [-]: exponent of η_soft, App. A Eq. 12, Table II."),
            real_spec("onset_smoothing", "-", 1e-4, 0.0, 0.01,
                      "x_s [-]: volume-fraction width over which |φ − φ_c|^{2/3} (App. A Eq. 8) is "
                      "smoothed so that dP_s/dε_s is finite at φ_c.")},
+          blended::stress_ratio_specs("App. A Eq. 11", "App. A Eq. 12", "Table II"),
           ViscosityLimits::specs()}),
      .make = [](const Coefficients& c) -> std::unique_ptr<SolidsStressModel> {
        return std::make_unique<SteadyShear>(read_constants(c), ViscosityLimits::read(c));

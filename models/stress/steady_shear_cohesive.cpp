@@ -81,17 +81,13 @@ void SteadyShearCohesive::evaluate(const Material& material, const SolidsState& 
 
 namespace {
 Constants read_constants(const Coefficients& c) {
-  return {.cohesive_onset_fraction = real_coefficient(c, "phi_a"),
+  Constants constants{.cohesive_onset_fraction = real_coefficient(c, "phi_a"),
           .inertial = real_coefficient(c, "alpha_inert"),
           .cohesive_2 = real_coefficient(c, "alpha_coh_2"),
-          .transition_inertial_number = real_coefficient(c, "i0"),
-          .hard_rise = real_coefficient(c, "alpha_1"),
-          .hard_exponent = real_coefficient(c, "beta_1"),
-          .transition_shear_rate = real_coefficient(c, "gamma_hat_0"),
-          .soft_drop = real_coefficient(c, "alpha_2"),
-          .soft_exponent = real_coefficient(c, "beta_2"),
           .cohesive_rate = real_coefficient(c, "alpha_4"),
           .onset_smoothing = real_coefficient(c, "onset_smoothing")};
+  blended::read_stress_ratio_constants(c, constants);
+  return constants;
 }
 
 [[maybe_unused]] const bool registered = stress_registry().add(
@@ -107,24 +103,13 @@ Constants read_constants(const Coefficients& c) {
            real_spec("alpha_coh_2", "-", 0.008, 0.0, 10.0,
                      "α_coh,2 [-]: cohesive floor of the intermediate pressure α_coh,2 "
                      "Bo*^{ε/(ε+χ)}, App. D Eq. 12, Table I."),
-           real_spec("i0", "-", 0.32, 1e-6, 10.0,
-                     "I_0 [-]: transition inertial number of η_hard, App. D Eq. 14, Table I."),
-           real_spec("alpha_1", "-", 0.37, 0.0, 10.0,
-                     "α₁ [-]: rise of η_hard above η_s, App. D Eq. 14, Table I."),
-           real_spec("beta_1", "-", 1.5, 0.1, 10.0,
-                     "β₁ [-]: exponent of η_hard, App. D Eq. 14, Table I."),
-           real_spec("gamma_hat_0", "-", 0.1, 1e-9, 10.0,
-                     "γ̂_0 [-]: transition scaled shear rate of η_soft, App. D Eq. 15, Table I."),
-           real_spec("alpha_2", "-", 0.2, 0.0, 10.0,
-                     "α₂ [-]: softness drop of η, App. D Eq. 15, Table I."),
-           real_spec("beta_2", "-", 1.0, 0.1, 10.0,
-                     "β₂ [-]: exponent of η_soft, App. D Eq. 15, Table I."),
            real_spec("alpha_4", "-", 0.1, 1e-9, 10.0,
                      "α₄ [-]: cohesive-to-inertial scaled shear rate α₄√Bo* in η, App. D Eq. 19, "
                      "Table I."),
            real_spec("onset_smoothing", "-", 1e-4, 0.0, 0.01,
                      "x_s [-]: volume-fraction width over which |φ − φ_c|^ε (App. D Eq. 7) is "
                      "smoothed so that dP_s/dε_s is finite at φ_c.")},
+          blended::stress_ratio_specs("App. D Eq. 14", "App. D Eq. 15", "Table I"),
           ViscosityLimits::specs()}),
      .make = [](const Coefficients& c) -> std::unique_ptr<SolidsStressModel> {
        return std::make_unique<SteadyShearCohesive>(read_constants(c), ViscosityLimits::read(c));

@@ -9,20 +9,21 @@
 
 namespace bagnold::solver {
 
-std::vector<double> monitor_row(const TimeLoopContext& context, const GasSolver& solver,
+std::vector<double> monitor_row(const TimeLoopContext& context, const FlowSolver& solver,
                                 const run::FlowState& state, double dt, const StepResult& step) {
   const auto inventory = run::phase_inventory(context.deck, context.domain, state);
   std::vector<double> row = {dt, static_cast<double>(step.iterations), step.residuals.largest(),
                              inventory.gas, inventory.solids};
-  const auto gas_flux = solver.boundary_mass_flux(state);
-  for (const double f : gas_flux) {
-    row.push_back(f);
-    row.push_back(0.0);  // solids flux: the two-fluid solver (issue 4)
+  const auto gas_flux = solver.boundary_mass_flux(state, Phase::gas);
+  const auto solids_flux = solver.boundary_mass_flux(state, Phase::solids);
+  for (std::size_t r = 0; r < gas_flux.size(); ++r) {
+    row.push_back(gas_flux[r]);
+    row.push_back(solids_flux[r]);
   }
   return row;
 }
 
-RunSummary run_time_loop(const TimeLoopContext& context, GasSolver& solver, run::FlowState& state,
+RunSummary run_time_loop(const TimeLoopContext& context, FlowSolver& solver, run::FlowState& state,
                          double start_time, long start_step, double dt_start) {
   const auto& run = context.deck.run;
   const auto& numerics = context.deck.numerics;
@@ -52,19 +53,14 @@ RunSummary run_time_loop(const TimeLoopContext& context, GasSolver& solver, run:
                               time, result.residuals.largest(), result.iterations, dt));
       if (dt < run.dt_min) {
         // Stop cleanly: the failed iterate goes to diagnostic.h5, the message says where.
-        const auto& r = result.residuals;
-        const double values[4] = {r.momentum[0], r.momentum[1], r.momentum[2], r.continuity};
-        int worst = 0;
-        for (int e = 1; e < 4; ++e)
-          if (!(values[e] <= values[worst])) worst = e;
-        const char* names[4] = {"x momentum", "y momentum", "z momentum", "continuity"};
+        const int worst = result.residuals.worst();
         const auto where = solver.worst_cell(worst);
         const std::string diagnostic = context.output.write_diagnostic(failed, time, step, dt_try);
         summary.failure = fmt::format(
             "the time step fell below run.dt_min = {:.3g} s at t = {:.6g} s; the {} equation "
             "diverged (normalized residual {:.3g}), worst in cell ({}, {}, {}) at ({:.4g}, {:.4g}, "
             "{:.4g}) m; the failed iterate is in {}",
-            run.dt_min, time, names[worst], values[worst], where.cell[0], where.cell[1],
+            run.dt_min, time, equation_name(worst), result.residuals.value[static_cast<std::size_t>(worst)], where.cell[0], where.cell[1],
             where.cell[2], where.position[0], where.position[1], where.position[2], diagnostic);
         break;
       }

@@ -11,7 +11,7 @@
 #include <functional>
 #include <string>
 
-#include "solver/simple/gas_solver.hpp"
+#include "solver/simple/flow_solver.hpp"
 #include "src/io/monitor.hpp"
 #include "src/run/output_writer.hpp"
 #include "src/run/progress.hpp"
@@ -40,11 +40,11 @@ struct TimeLoopContext {
 
 // From `start_time` (step number `start_step`) with a first step of `dt_start`. A SIGINT or
 // SIGTERM stops the loop after the current step with a final snapshot (summary.interrupted).
-RunSummary run_time_loop(const TimeLoopContext& context, GasSolver& solver, run::FlowState& state,
+RunSummary run_time_loop(const TimeLoopContext& context, FlowSolver& solver, run::FlowState& state,
                          double start_time, long start_step, double dt_start);
 
 // The monitor row after a step (columns of run::monitor_columns).
-std::vector<double> monitor_row(const TimeLoopContext& context, const GasSolver& solver,
+std::vector<double> monitor_row(const TimeLoopContext& context, const FlowSolver& solver,
                                 const run::FlowState& state, double dt, const StepResult& step);
 
 }  // namespace bagnold::solver

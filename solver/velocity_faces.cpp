@@ -12,6 +12,11 @@ bool is_pressure(BoundaryType t) {
 
 struct Classifier {
   const parallel::Domain& domain;
+  bool solids;  // the solids phase: a mass inflow brings the solids' velocity
+
+  const std::array<double, 3>& inflow_velocity(const deck::BoundaryRegion& r) const {
+    return solids ? r.solids_velocity : r.gas_velocity;
+  }
 
   CellKind kind_at(grid::Natural n) const { return domain.flags.kind[static_cast<std::size_t>(n)]; }
   const deck::BoundaryRegion& region_at(grid::Natural n) const {
@@ -41,7 +46,7 @@ struct Classifier {
     const BoundaryType t = type_at(boundary);
     if (is_pressure(t)) return {FaceClass::unknown, 0.0};
     const auto& r = region_at(boundary);
-    if (t == BoundaryType::mass_inflow) return {FaceClass::fixed, r.gas_velocity[static_cast<std::size_t>(d)]};
+    if (t == BoundaryType::mass_inflow) return {FaceClass::fixed, inflow_velocity(r)[static_cast<std::size_t>(d)]};
     if (t == BoundaryType::moving_wall) return {FaceClass::fixed, r.wall_velocity[static_cast<std::size_t>(d)]};
     return {FaceClass::fixed, 0.0};
   }
@@ -67,7 +72,7 @@ struct Classifier {
         break;
       case BoundaryType::mass_inflow:
         link.kind = LinkKind::wall;
-        link.value = r.gas_velocity[static_cast<std::size_t>(d)];
+        link.value = inflow_velocity(r)[static_cast<std::size_t>(d)];
         break;
       default: break;  // free slip, pressure boundaries: zero gradient
     }
@@ -76,10 +81,10 @@ struct Classifier {
 };
 }  // namespace
 
-VelocityFaces::VelocityFaces(const deck::Deck& /*deck*/, const parallel::Domain& domain) {
+VelocityFaces::VelocityFaces(const parallel::Domain& domain, bool solids_phase) {
   const auto& layout = domain.layout;
   const auto local = static_cast<std::size_t>(layout.local_count());
-  const Classifier classifier{domain};
+  const Classifier classifier{domain, solids_phase};
   for (int d = 0; d < 3; ++d) {
     auto& k = kind[static_cast<std::size_t>(d)];
     auto& v = fixed_value[static_cast<std::size_t>(d)];

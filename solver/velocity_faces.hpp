@@ -33,7 +33,9 @@ struct Link {
 };
 
 struct VelocityFaces {
-  VelocityFaces(const deck::Deck& deck, const parallel::Domain& domain);
+  // The gas's or the solids' faces: they differ only in what a mass inflow brings (its gas or
+  // solids velocity); the unknowns are the same.
+  VelocityFaces(const parallel::Domain& domain, bool solids_phase);
 
   std::array<std::vector<FaceClass>, 3> kind;      // per local cell
   std::array<std::vector<double>, 3> fixed_value;  // normal velocity of fixed faces [m/s]

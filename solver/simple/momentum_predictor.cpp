@@ -1,173 +1,159 @@
-// Step 1 of the outer iteration: the momentum predictor for one velocity component d.
+// Step 1b of the outer iteration: the momentum predictors of both phases for the component d,
+// with partial elimination of the drag coupling (Spalding's PEA, as MFIX).
 //
-//   1. For each unknown face velocity u_P (control volume between the centres of its owning
-//      cell c and c's + neighbour n), and each of its six faces:
-//        F  outward mass flux through the face, from the current iterate;
-//        D  μ A / δ, with δ the distance to the neighbour (half a cell to a wall);
-//        a_nb = D + max(−F, 0),  a_P += D + max(F, 0)         (first-order upwind, implicit);
-//        b −= F (φ_f^TVD − φ_upwind)                           (TVD by deferred correction).
-//   2. Sources: ε_g (P_c − P_n) A, ε_g ρ g_d V, drag β V (u_s − u_P) (implicit in u_P), and the
-//      implicit-Euler term ε_g ρ V / dt (u_P − u_P^old). Fluxes and diffusion carry ε_g too.
-//   3. Under-relaxation (Patankar): a_P ← a_P / α_u, b ← b + (1 − α_u) a_P u_P*.
-//   4. d = ε_g A / a_P for the pressure correction; solve; exchange the halo.
-//   (SIMPLEC, the default: d = A / (a_P − Σ a_nb), with no pressure under-relaxation needed.)
-// Returns Σ|b + Σ a_nb u_nb − a_P u_P| / Σ a_P U before the solve (U: the step's residual velocity scale).
+// Row by row, with A_m = a_m + βV the diagonal including drag and R_m = b_m + Σ a_nb u_nb the
+// rest of the row at the current iterate, the pair
+//     A_g u_g − βV u_s = R_g,      A_s u_s − βV u_g = R_s
+// is solved for each phase with the other phase's own row eliminated:
+//     (A_g − (βV)²/A_s) u_g = b_g + Σ a_nb u_nb + βV R_s / A_s       (and likewise the solids),
+// so a strong drag couples the phases within the predictor instead of across outer iterations.
+// Then Patankar under-relaxation (diag / α_u, b + (1 − α_u) diag u*), and one BiCGStab solve per
+// phase. Where the solids are below the threshold their velocity is zero (and the gas sees
+// β (0 − u_g)); a frozen solids phase enters with its given velocity.
+//
+// The corrections' velocity responses come from the same 2 × 2 system with the relaxed
+// diagonals D_m (SIMPLEC: D_m − Σ a_nb):
+//   [D_g, −βV; −βV, D_s] (u'_g, u'_s) = (ε_g A, ε_s A) (p'_c − p'_n)  →  d_g, d_s,
+//   [D_g, −βV; −βV, D_s] (u'_g, u'_s) = (0, K A) (ε'_c − ε'_n)       →  e (solids), K = dP_s/dε_s.
+// Residuals: Σ|R_m + βV u_other − A_m u_m| / Σ A_m U per phase (U: the residual velocity scale).
 #include <algorithm>
 #include <cmath>
 
-#include "solver/simple/gas_solver.hpp"
+#include "solver/simple/flow_solver.hpp"
 
 namespace bagnold::solver {
 
-double GasSolver::predict_momentum(int d, run::FlowState& state, const run::FlowState& old,
-                                   double dt) {
+namespace {
+// The relaxed diagonal that the corrections see: SIMPLEC drops the neighbours' corrections.
+double correction_diagonal(double relaxed, double neighbours, bool simplec) {
+  return simplec && relaxed - neighbours > 1e-12 * relaxed ? relaxed - neighbours : relaxed;
+}
+}  // namespace
+
+void FlowSolver::predict_momentum(int d, run::FlowState& state, const run::FlowState& old,
+                                  double dt, Residuals& residuals) {
   const auto& layout = m_domain.layout;
   const auto ud = static_cast<std::size_t>(d);
-  const double rho = m_deck.gas.density;
-  const double mu = m_deck.gas.viscosity;
-  const double alpha = m_deck.numerics.relax_velocity;
-  auto& u = state.gas_velocity[ud];
-  const auto& u_old = old.gas_velocity[ud];
-  const auto& pressure = state.gas_pressure;
-  const auto& links = m_faces.links[ud];
-  const auto& kind = m_faces.kind[ud];
   const auto& numbering = *m_velocity_numbering[ud];
-  auto& d_coefficient = m_d[ud];
-  auto at = [&](int local) { return u[static_cast<std::size_t>(local)]; };
-  if (numbering.total_rows == 0) return 0.0;  // e.g. no fluid faces along d
-  const double velocity_scale = m_velocity_scale;
+  if (numbering.total_rows == 0) return;  // e.g. no fluid faces along d
+  const double alpha = m_deck.numerics.relax_velocity;
+  const bool coupled = m_moves[gas] && m_moves[solids];
+  auto& u_g = state.gas_velocity[ud];
+  auto& u_s = state.solids_velocity[ud];
 
-  double residual_sum = 0.0, norm_sum = 0.0;
-  m_worst_value[ud] = 0.0;
-  m_worst_local[ud] = -1;
-  std::vector<double> x(static_cast<std::size_t>(numbering.owned_rows()));
-  for (std::size_t row = 0; row < numbering.owned_locals.size(); ++row) {
-    const int l = numbering.owned_locals[row];
+  std::array<std::vector<MomentumRow>, 2> rows;
+  for (const Phase phase : {gas, solids})
+    if (m_moves[phase]) assemble_momentum(phase, d, state, old, dt, rows[phase]);
+
+  std::array<double, 2> residual_sum{0, 0}, norm_sum{0, 0};
+  std::array<std::vector<double>, 2> x;
+  for (auto& v : x) v.resize(numbering.owned_locals.size());
+  for (const int e : {gas_momentum_x + d, solids_momentum_x + d}) {
+    m_worst_value[static_cast<std::size_t>(e)] = 0.0;
+    m_worst_local[static_cast<std::size_t>(e)] = -1;
+  }
+  for (std::size_t r = 0; r < numbering.owned_locals.size(); ++r) {
+    const int l = numbering.owned_locals[r];
+    const auto ul = static_cast<std::size_t>(l);
     const int n = layout.neighbour(l, 2 * d + 1);
+    const MomentumRow* g = m_moves[gas] ? &rows[gas][r] : nullptr;
+    const MomentumRow* s = m_moves[solids] && rows[solids][r].active ? &rows[solids][r] : nullptr;
+    const MomentumRow& any = g ? *g : rows[solids][r];
     const double half_c = 0.5 * width(l, d), half_n = 0.5 * width(n, d);
-    const double area_d = face_area(l, d);
-    const double volume = (half_c + half_n) * area_d;
-    const double fraction = face_fraction(state, l, d);  // ε_g at this face velocity
-    const auto& eps = state.gas_fraction;
-    double a_p = 0.0, b = 0.0, neighbours_u = 0.0, neighbours_a = 0.0;
-    std::int64_t columns[7];
-    double values[7];
-    int count = 0;
+    const double beta = (m_beta[ul] * half_n + m_beta[static_cast<std::size_t>(n)] * half_c) / (half_c + half_n);
+    const double beta_v = coupled || (m_moves[gas] && m_drag) ? beta * any.volume : 0.0;
+    const double A_g = g ? g->a + beta_v : 0.0, A_s = s ? s->a + beta_v : 0.0;
+    const double R_g = g ? g->b + g->neighbours_u : 0.0, R_s = s ? s->b + s->neighbours_u : 0.0;
+    const double U = m_velocity_scale;
 
-    for (int face = 0; face < 6; ++face) {
-      const Link& link = links[6 * static_cast<std::size_t>(l) + static_cast<std::size_t>(face)];
-      const int e = parallel::face_direction(face);
-      const int s = parallel::face_sign(face);
-      double flux_out = 0.0, diffusion = 0.0;
-      if (e == d) {
-        // The control-volume face at the centre of n (s > 0) or of c (s < 0).
-        const bool has_far = link.kind == LinkKind::unknown || link.kind == LinkKind::fixed;
-        const double centre_fraction = eps[static_cast<std::size_t>(s > 0 ? n : l)];
-        flux_out = s * rho * centre_fraction * area_d * 0.5 * (at(l) + (has_far ? at(link.local) : at(l)));
-        diffusion = has_far ? fraction * mu * area_d / (s > 0 ? width(n, d) : width(l, d)) : 0.0;
+    if (g) {
+      const double row_residual = std::abs(R_g + beta_v * u_s[ul] - A_g * u_g[ul]);
+      residual_sum[gas] += row_residual;
+      norm_sum[gas] += A_g * U;
+      record_worst(gas_momentum_x + d, row_residual, l);
+      double diagonal = A_g, rhs = g->b;
+      if (s) {
+        diagonal -= beta_v * beta_v / A_s;
+        rhs += beta_v * R_s / A_s;
       } else {
-        // The face between the owning cells' faces along e: half of c's and half of n's.
-        const int t = 3 - d - e;
-        const auto& v = state.gas_velocity[static_cast<std::size_t>(e)];
-        const int cv = s > 0 ? l : layout.neighbour(l, face);
-        const int nv = s > 0 ? n : layout.neighbour(n, face);
-        // Mass flux through those half faces: ε_g on each of them.
-        const double vc = cv >= 0 ? v[static_cast<std::size_t>(cv)] * face_fraction(state, cv, e) : 0.0;
-        const double vn = nv >= 0 ? v[static_cast<std::size_t>(nv)] * face_fraction(state, nv, e) : 0.0;
-        flux_out = s * rho * (vc * half_c + vn * half_n) * width(l, t);
-        const double area = (half_c + half_n) * width(l, t);
-        if (link.kind == LinkKind::wall) {
-          diffusion = fraction * mu * area / (0.5 * width(l, e));
-        } else if (link.kind != LinkKind::zero_gradient) {
-          diffusion = fraction * mu * area / (0.5 * (width(l, e) + width(link.local, e)));
-        }
+        rhs += beta_v * u_s[ul];  // frozen solids, or none here (u_s = 0)
       }
-
-      switch (link.kind) {
-        case LinkKind::unknown: {
-          const double a_nb = diffusion + std::max(-flux_out, 0.0);
-          a_p += diffusion + std::max(flux_out, 0.0);
-          columns[count] = numbering.global[static_cast<std::size_t>(link.local)];
-          values[count++] = -a_nb;
-          neighbours_u += a_nb * at(link.local);
-          neighbours_a += a_nb;
-          if (m_limiter != Limiter::upwind) {
-            double upwind_upwind, upwind, downwind;
-            if (flux_out > 0.0) {
-              const Link& back = links[6 * static_cast<std::size_t>(l) + static_cast<std::size_t>(face ^ 1)];
-              upwind = at(l);
-              downwind = at(link.local);
-              upwind_upwind = back.kind == LinkKind::wall ? back.value
-                              : back.kind == LinkKind::zero_gradient ? at(l) : at(back.local);
-            } else {
-              const int beyond = layout.neighbour(link.local, face);
-              upwind = at(link.local);
-              downwind = at(l);
-              upwind_upwind = (beyond >= 0 && kind[static_cast<std::size_t>(beyond)] != FaceClass::none)
-                                  ? at(beyond) : upwind;
-            }
-            b -= flux_out * tvd_correction(m_limiter, upwind_upwind, upwind, downwind);
-          }
-          break;
+      const double relaxed = diagonal / alpha;
+      std::int64_t columns[7];
+      double values[7];
+      std::copy(g->columns, g->columns + g->count, columns);
+      std::copy(g->values, g->values + g->count, values);
+      columns[g->count] = numbering.global[ul];
+      values[g->count] = relaxed;
+      m_momentum_system[gas][ud]->set_row(numbering.global[ul], columns, values, g->count + 1,
+                                          rhs + (1.0 - alpha) * relaxed * u_g[ul]);
+      x[gas][r] = u_g[ul];
+    }
+    if (m_moves[solids]) {
+      const MomentumRow& row = rows[solids][r];
+      double diagonal = 1.0, rhs = 0.0;
+      if (s) {
+        const double row_residual = std::abs(R_s + beta_v * u_g[ul] - A_s * u_s[ul]);
+        residual_sum[solids] += row_residual;
+        norm_sum[solids] += A_s * U;
+        record_worst(solids_momentum_x + d, row_residual, l);
+        diagonal = A_s;
+        rhs = s->b;
+        if (g) {
+          diagonal -= beta_v * beta_v / A_g;
+          rhs += beta_v * R_g / A_g;
         }
-        case LinkKind::fixed:
-        case LinkKind::wall: {
-          const double value = link.kind == LinkKind::fixed ? at(link.local) : link.value;
-          const double a_nb = diffusion + std::max(-flux_out, 0.0);
-          a_p += diffusion + std::max(flux_out, 0.0);
-          b += a_nb * value;
-          break;
-        }
-        case LinkKind::zero_gradient:
-          // Open end: outflow leaves with u_P; inflow brings u_P in, lagged.
-          a_p += std::max(flux_out, 0.0);
-          b += std::max(-flux_out, 0.0) * at(l);
-          break;
+        diagonal /= alpha;
+        rhs += (1.0 - alpha) * diagonal * u_s[ul];
       }
+      std::int64_t columns[7];
+      double values[7];
+      std::copy(row.columns, row.columns + row.count, columns);
+      std::copy(row.values, row.values + row.count, values);
+      columns[row.count] = numbering.global[ul];
+      values[row.count] = diagonal;
+      m_momentum_system[solids][ud]->set_row(numbering.global[ul], columns, values, row.count + 1, rhs);
+      x[solids][r] = s ? u_s[ul] : 0.0;
     }
 
-    b += fraction * (pressure[static_cast<std::size_t>(l)] - pressure[static_cast<std::size_t>(n)]) * area_d;
-    b += fraction * rho * m_deck.physics.gravity[ud] * volume;
-    if (!m_source[ud].empty()) b += m_source[ud][static_cast<std::size_t>(l)] * volume;
-    const double a_transient = fraction * rho * volume / dt;
-    a_p += a_transient;
-    b += a_transient * u_old[static_cast<std::size_t>(l)];
-    // Drag towards the solids velocity, implicit in u: β (u_s − u) V, β interpolated to the face.
-    const double beta = (m_beta[static_cast<std::size_t>(l)] * half_n + m_beta[static_cast<std::size_t>(n)] * half_c) /
-                        (half_c + half_n);
-    a_p += beta * volume;
-    b += beta * volume * state.solids_velocity[ud][static_cast<std::size_t>(l)];
-
-    const double u_p = at(l);
-    const double row_residual = std::abs(b + neighbours_u - a_p * u_p);
-    residual_sum += row_residual;
-    if (!(row_residual <= m_worst_value[ud])) {  // NaN is the worst
-      m_worst_value[ud] = std::isnan(row_residual) ? INFINITY : row_residual;
-      m_worst_local[ud] = l;
+    // Velocity responses to the pressure and volume-fraction corrections.
+    const double D_g = g ? correction_diagonal(A_g / alpha, g->neighbours_a, m_simplec) : 0.0;
+    const double D_s = s ? correction_diagonal(A_s / alpha, s->neighbours_a, m_simplec) : 0.0;
+    const double eps_g = g ? g->fraction : 0.0;
+    const double eps_s = m_moves[solids] ? rows[solids][r].fraction : 0.0;
+    const bool dense_pair = layout.kind(l) == grid::CellKind::fluid && layout.kind(n) == grid::CellKind::fluid;
+    const double K = dense_pair ? 0.5 * (m_pressure_derivative[ul] + m_pressure_derivative[static_cast<std::size_t>(n)]) : 0.0;
+    double d_g = 0.0, d_s = 0.0, e = 0.0;
+    if (g && s) {
+      const double det = D_g * D_s - beta_v * beta_v;
+      d_g = any.area * (eps_g * D_s + eps_s * beta_v) / det;
+      d_s = any.area * (eps_s * D_g + eps_g * beta_v) / det;
+      e = any.area * K * D_g / det;
+    } else if (g) {
+      d_g = eps_g * any.area / D_g;
+    } else if (s) {
+      d_s = eps_s * any.area / D_s;
+      e = any.area * K / D_s;
     }
-    norm_sum += a_p * velocity_scale;
-
-    const double a_relaxed = a_p / alpha;
-    // SIMPLEC drops the neighbours' corrections consistently: d = A / (a_P − Σ a_nb).
-    const double a_for_d = m_simplec && a_relaxed - neighbours_a > 1e-12 * a_relaxed
-                               ? a_relaxed - neighbours_a : a_relaxed;
-    d_coefficient[static_cast<std::size_t>(l)] = fraction * area_d / a_for_d;
-    columns[count] = numbering.global[static_cast<std::size_t>(l)];
-    values[count++] = a_relaxed;
-    m_momentum_system[ud]->set_row(numbering.global[static_cast<std::size_t>(l)], columns, values,
-                                   count, b + (1.0 - alpha) * a_relaxed * u_p);
-    x[row] = u_p;
+    m_d[gas][ud][ul] = d_g;
+    m_d[solids][ud][ul] = d_s;
+    m_e[ud][ul] = e;
   }
 
-  m_momentum_system[ud]->solve(x);
-  for (std::size_t row = 0; row < numbering.owned_locals.size(); ++row)
-    u[static_cast<std::size_t>(numbering.owned_locals[row])] = x[row];
-  parallel::exchange_halo<double>(layout, u);
-  parallel::exchange_halo<double>(layout, d_coefficient);
-
-  const double residual = layout.comm().sum(residual_sum);
-  const double norm = layout.comm().sum(norm_sum);
-  return residual <= 1e-300 ? 0.0 : residual / std::max(norm, 1e-300);
+  for (const Phase phase : {gas, solids}) {
+    if (!m_moves[phase]) continue;
+    auto& u = phase == gas ? u_g : u_s;
+    m_momentum_system[phase][ud]->solve(x[phase]);
+    for (std::size_t r = 0; r < numbering.owned_locals.size(); ++r)
+      u[static_cast<std::size_t>(numbering.owned_locals[r])] = x[phase][r];
+    parallel::exchange_halo<double>(layout, u);
+    parallel::exchange_halo<double>(layout, m_d[phase][ud]);
+    const double residual = layout.comm().sum(residual_sum[phase]);
+    const double norm = layout.comm().sum(norm_sum[phase]);
+    residuals.value[static_cast<std::size_t>((phase == gas ? gas_momentum_x : solids_momentum_x) + d)] =
+        residual <= 1e-300 ? 0.0 : residual / std::max(norm, 1e-300);
+  }
+  if (m_moves[solids]) parallel::exchange_halo<double>(layout, m_e[ud]);
 }
 
 }  // namespace bagnold::solver

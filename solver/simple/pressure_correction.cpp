@@ -1,27 +1,29 @@
-// Step 2 of the outer iteration: the pressure correction (SIMPLE).
+// Step 2 of the outer iteration: the pressure correction from the mixture volume continuity.
 //
-//   1. With u = u* + d (p'_c − p'_n) on every unknown face (d = ε_g A / a_P from step 1) and
-//      p' = 0 in pressure-boundary cells, continuity in each fluid cell P becomes
-//        Σ_faces ρ ε_g A d (p'_P − p'_nb) = −Σ_faces ρ ε_g A u*_out,
-//      symmetric positive (semi-)definite: CG with algebraic multigrid (GAMG or BoomerAMG); a
-//      closed domain has the constant null space, removed in the solve.
-//   2. P += α_p p' in fluid cells; u += d (p'_c − p'_n) on unknown faces; exchange the halo.
-// Returns the mass imbalance before the correction, Σ|Σ_faces F_out| / Σ ½ Σ_faces |F| (at least
-// the flux of the residual velocity scale through every face).
+// Both phases are incompressible and ε_g + ε_s = 1, so the sum of their continuity equations is
+// ∇·(ε_g u_g + ε_s u_s) = 0 (the transient terms cancel). With, on every unknown face,
+// u_m = u*_m + d_m (p'_c − p'_n) (d_m from the predictors' 2 × 2 drag-coupled response) and
+// p' = 0 in pressure-boundary cells, continuity in each fluid cell P becomes
+//     Σ_faces A (ε_g d_g + ε_s d_s) (p'_P − p'_nb) = −Σ_faces A (ε_g u*_g + ε_s u*_s)_out,
+// with ε_m the fractions the phases carry through the face (flux_fraction): symmetric positive
+// (semi-)definite, CG with algebraic multigrid (GAMG or BoomerAMG); a closed domain has the
+// constant null space, removed in the solve. Then P += α_p p' in fluid cells, and both phases'
+// velocities are corrected. Without solids this is the single-phase pressure correction.
+// Returns the volume imbalance before the correction, Σ|Σ_faces Q_out| / Σ ½ Σ_faces |Q| (at
+// least the volume flux of the residual velocity scale through every face).
 #include <algorithm>
 #include <cmath>
 
-#include "solver/simple/gas_solver.hpp"
+#include "solver/simple/flow_solver.hpp"
 
 namespace bagnold::solver {
 
-double GasSolver::correct_pressure(run::FlowState& state) {
+double FlowSolver::correct_pressure(run::FlowState& state) {
   const auto& layout = m_domain.layout;
-  const double rho = m_deck.gas.density;
   const auto& numbering = *m_pressure_numbering;
   double imbalance = 0.0, throughput = 0.0;
-  m_worst_value[3] = 0.0;
-  m_worst_local[3] = -1;
+  m_worst_value[mixture_continuity] = 0.0;
+  m_worst_local[mixture_continuity] = -1;
 
   for (const int l : numbering.owned_locals) {
     double a_p = 0.0, b = 0.0;
@@ -30,17 +32,21 @@ double GasSolver::correct_pressure(run::FlowState& state) {
     int count = 0;
     for (int face = 0; face < 6; ++face) {
       const int d = parallel::face_direction(face);
+      const auto ud = static_cast<std::size_t>(d);
       const int s = parallel::face_sign(face);
       const int m = layout.neighbour(l, face);
       const int owner = s > 0 ? l : m;  // the cell that owns this face's velocity
       if (owner < 0) continue;
       const auto uo = static_cast<std::size_t>(owner);
-      const double area = face_fraction(state, owner, d) * face_area(l, d);  // open to the gas
-      const double flux_out = s * rho * area * state.gas_velocity[static_cast<std::size_t>(d)][uo];
+      const double area = face_area(l, d);
+      const double eps_g = flux_fraction(state, gas, owner, d);
+      const double eps_s = flux_fraction(state, solids, owner, d);
+      const double flux_out = s * area * (eps_g * state.gas_velocity[ud][uo] +
+                                          eps_s * state.solids_velocity[ud][uo]);
       b -= flux_out;
       throughput += 0.5 * std::abs(flux_out);
-      if (m_faces.kind[static_cast<std::size_t>(d)][uo] != FaceClass::unknown) continue;
-      const double coefficient = rho * area * m_d[static_cast<std::size_t>(d)][uo];
+      if (faces(gas).kind[ud][uo] != FaceClass::unknown) continue;
+      const double coefficient = area * (eps_g * m_d[gas][ud][uo] + eps_s * m_d[solids][ud][uo]);
       a_p += coefficient;
       if (layout.kind(m) == grid::CellKind::fluid) {
         columns[count] = numbering.global[static_cast<std::size_t>(m)];
@@ -48,10 +54,7 @@ double GasSolver::correct_pressure(run::FlowState& state) {
       }
     }
     imbalance += std::abs(b);
-    if (!(std::abs(b) <= m_worst_value[3])) {
-      m_worst_value[3] = std::isnan(b) ? INFINITY : std::abs(b);
-      m_worst_local[3] = l;
-    }
+    record_worst(mixture_continuity, std::abs(b), l);
     columns[count] = numbering.global[static_cast<std::size_t>(l)];
     values[count++] = a_p;
     m_pressure_system->set_row(numbering.global[static_cast<std::size_t>(l)], columns, values, count, b);
@@ -68,22 +71,27 @@ double GasSolver::correct_pressure(run::FlowState& state) {
   for (const int l : numbering.owned_locals)
     state.gas_pressure[static_cast<std::size_t>(l)] += alpha_p * correction[static_cast<std::size_t>(l)];
   parallel::exchange_halo<double>(layout, state.gas_pressure);
-  for (int d = 0; d < 3; ++d) {
-    const auto ud = static_cast<std::size_t>(d);
-    auto& u = state.gas_velocity[ud];
-    for (const int l : m_velocity_numbering[ud]->owned_locals) {
-      const int n = layout.neighbour(l, 2 * d + 1);
-      u[static_cast<std::size_t>(l)] += m_d[ud][static_cast<std::size_t>(l)] *
-                                        (correction[static_cast<std::size_t>(l)] -
-                                         correction[static_cast<std::size_t>(n)]);
+  for (const Phase phase : {gas, solids}) {
+    if (!m_moves[phase]) continue;
+    auto& velocity = phase == gas ? state.gas_velocity : state.solids_velocity;
+    for (int d = 0; d < 3; ++d) {
+      const auto ud = static_cast<std::size_t>(d);
+      auto& u = velocity[ud];
+      const auto& response = m_d[phase][ud];
+      for (const int l : m_velocity_numbering[ud]->owned_locals) {
+        const int n = layout.neighbour(l, 2 * d + 1);
+        u[static_cast<std::size_t>(l)] += response[static_cast<std::size_t>(l)] *
+                                          (correction[static_cast<std::size_t>(l)] -
+                                           correction[static_cast<std::size_t>(n)]);
+      }
+      parallel::exchange_halo<double>(layout, u);
     }
-    parallel::exchange_halo<double>(layout, u);
   }
 
   const double total_imbalance = layout.comm().sum(imbalance);
   // A flow at rest has no throughput: measure against the flux the velocity scale would carry.
   const double total_throughput =
-      std::max(layout.comm().sum(throughput), m_reference_flux * m_velocity_scale);
+      std::max(layout.comm().sum(throughput), m_reference_area * m_velocity_scale);
   return total_imbalance <= 1e-300 ? 0.0 : total_imbalance / total_throughput;
 }
 

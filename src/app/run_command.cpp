@@ -1,6 +1,5 @@
 // bagnold run DECK: set up the domain and the initial state, write it, and advance to
-// run.end_time. Gas-only decks (solids.enabled = false) run the SIMPLE gas solver; the
-// two-fluid solver arrives with issue 4, until then a deck with solids writes its initial state.
+// run.end_time with the two-fluid solver (gas alone, gas and solids, or solids in vacuum).
 #include <fmt/format.h>
 
 #include <chrono>
@@ -46,24 +45,6 @@ StartPoint restore_state(const std::string& file_or_directory, const parallel::D
   return start;
 }
 
-// Until the two-fluid solver (issue 4): a deck with solids writes its initial state and stops.
-int write_initial_state_only(const deck::Deck& deck, const parallel::Domain& domain,
-                             const run::FlowState& state, run::OutputWriter& output,
-                             io::Monitor& monitor) {
-  const auto inventory = run::phase_inventory(deck, domain, state);
-  std::vector<double> row(monitor.columns().size(), 0.0);
-  row[3] = inventory.gas;
-  row[4] = inventory.solids;
-  monitor.append(0.0, row);
-  const std::string path = output.write(state, 0.0, 0, deck.run.dt_initial);
-  say(fmt::format("initial state: solids {:.6g} kg, gas {:.6g} kg; wrote {}", inventory.solids,
-                  inventory.gas, path));
-  say("bagnold run: this build has no two-fluid solver yet (issue 4); a deck with solids "
-      "stops at t = 0 after writing its initial state",
-      true);
-  return success;
-}
-
 }  // namespace
 
 int run_command(const DeckArguments& args) {
@@ -100,14 +81,9 @@ int run_command(const DeckArguments& args) {
                         comm.is_root(), start.snapshot.empty() ? nullptr : &start.time);
     solver::PetscSession petsc(nullptr, nullptr);
     solver::PetscSession::add_options(args.petsc_options);
-    // Moving solids need the two-fluid solver (issue 4); frozen solids (a fixed bed) and gas
-    // alone run with the gas solver.
-    if (deck.solids.enabled && deck.solids.momentum)
-      return write_initial_state_only(deck, domain, state, output, monitor);
-
-    solver::GasSolver gas(deck, domain);
+    solver::FlowSolver flow(deck, domain);
     if (start.snapshot.empty()) {
-      gas.apply_boundary_values(state);
+      flow.apply_boundary_values(state);
       output.write(state, 0.0, 0, deck.run.dt_initial, deck.run.dt_initial);
     }
     run::install_stop_handlers();
@@ -115,7 +91,7 @@ int run_command(const DeckArguments& args) {
     const solver::TimeLoopContext context{deck, domain, output, monitor, progress,
                                           [](const std::string& line) { say(line); }};
     const auto started = std::chrono::steady_clock::now();
-    const auto result = solver::run_time_loop(context, gas, state, start.time, start.step, start.dt);
+    const auto result = solver::run_time_loop(context, flow, state, start.time, start.step, start.dt);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     const double per_step = result.steps ? static_cast<double>(result.outer_iterations) /
                                                static_cast<double>(result.steps)

@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "solver/petsc/handle.hpp"
-#include "solver/simple/gas_solver.hpp"
+#include "solver/simple/flow_solver.hpp"
 #include "src/deck/load.hpp"
 #include "src/parallel/domain.hpp"
 #include "src/run/flow_state.hpp"
@@ -172,7 +172,7 @@ class Problem {
   double m_mu;
   deck::Deck m_deck;
   parallel::Domain m_domain;
-  solver::GasSolver m_solver;
+  solver::FlowSolver m_solver;
   run::FlowState m_state;
 };
 

@@ -1,0 +1,153 @@
+// Step 1a of the outer iteration: the momentum rows of one phase m (gas or solids) for the
+// velocity component d, before drag, relaxation and partial elimination (momentum_predictor.cpp).
+//
+// For each unknown face velocity u_P (control volume between the centres of its owning cell c
+// and c's + neighbour n), and each of its six faces:
+//   F   outward mass flux ρ_m ε_m u A through the face, from the current iterate (ε_m carried:
+//       the gas's linear face value, the solids' upwind value, flux_fraction);
+//   D   μ_eff A / δ, with δ the distance to the neighbour (half a cell to a wall), μ_eff the
+//       phase's effective viscosity (ε_g μ_g, or the closure's μ_s) averaged over the cells
+//       around the face;
+//   a_nb = D + max(−F, 0),  a_P += a_nb       (first-order upwind, implicit, non-conservative
+//       form: the continuity imbalance is subtracted, so a_P = Σ a_nb + transient and the
+//       rows stay diagonally dominant while ε_m is still changing within the step);
+//   b −= F (φ_f^TVD − φ_upwind)               (TVD by deferred correction).
+// Sources: ε_m (P_c − P_n) A; for the solids also (P_s,c − P_s,n) A between fluid cells;
+// ε_m ρ_m g_d V; the implicit-Euler term ε_m ρ_m V / dt (u_P − u_P^old); the gas's optional
+// manufactured source.
+#include <algorithm>
+#include <cmath>
+
+#include "solver/simple/flow_solver.hpp"
+
+namespace bagnold::solver {
+
+void FlowSolver::assemble_momentum(Phase phase, int d, const run::FlowState& state,
+                                   const run::FlowState& old, double dt,
+                                   std::vector<MomentumRow>& rows) {
+  const auto& layout = m_domain.layout;
+  const auto ud = static_cast<std::size_t>(d);
+  const double rho = density(phase);
+  const auto& velocity = phase == gas ? state.gas_velocity : state.solids_velocity;
+  const auto& u = velocity[ud];
+  const auto& u_old = (phase == gas ? old.gas_velocity : old.solids_velocity)[ud];
+  const auto& eps = phase == gas ? state.gas_fraction : state.solids_fraction;
+  const auto& mu = m_viscosity[phase];
+  const auto& links = faces(phase).links[ud];
+  const auto& kind = faces(phase).kind[ud];
+  const auto& numbering = *m_velocity_numbering[ud];
+  auto at = [&](int local) { return u[static_cast<std::size_t>(local)]; };
+  auto viscosity = [&](int local) { return local >= 0 ? mu[static_cast<std::size_t>(local)] : 0.0; };
+
+  rows.assign(numbering.owned_locals.size(), MomentumRow{});
+  for (std::size_t r = 0; r < numbering.owned_locals.size(); ++r) {
+    MomentumRow& row = rows[r];
+    const int l = numbering.owned_locals[r];
+    const int n = layout.neighbour(l, 2 * d + 1);
+    const double half_c = 0.5 * width(l, d), half_n = 0.5 * width(n, d);
+    row.area = face_area(l, d);
+    row.volume = (half_c + half_n) * row.area;
+    row.fraction = face_fraction(state, phase, l, d);
+    if (phase == solids && !solids_present(state, l, d)) {
+      // Not solved (u_s = 0): the row keeps its pattern, with zero off-diagonal entries.
+      for (int face = 0; face < 6; ++face) {
+        const Link& link = links[6 * static_cast<std::size_t>(l) + static_cast<std::size_t>(face)];
+        if (link.kind != LinkKind::unknown) continue;
+        row.columns[row.count] = numbering.global[static_cast<std::size_t>(link.local)];
+        row.values[row.count++] = 0.0;
+      }
+      row.active = false;
+      continue;
+    }
+
+    for (int face = 0; face < 6; ++face) {
+      const Link& link = links[6 * static_cast<std::size_t>(l) + static_cast<std::size_t>(face)];
+      const int e = parallel::face_direction(face);
+      const int s = parallel::face_sign(face);
+      double flux_out = 0.0, diffusion = 0.0;
+      if (e == d) {
+        // The control-volume face at the centre of n (s > 0) or of c (s < 0).
+        const bool has_far = link.kind == LinkKind::unknown || link.kind == LinkKind::fixed;
+        const int centre = s > 0 ? n : l;
+        flux_out = s * rho * eps[static_cast<std::size_t>(centre)] * row.area * 0.5 *
+                   (at(l) + (has_far ? at(link.local) : at(l)));
+        diffusion = has_far ? viscosity(centre) * row.area / width(centre, d) : 0.0;
+      } else {
+        // The face between the owning cells' faces along e: half of c's and half of n's.
+        const int t = 3 - d - e;
+        const auto& v = velocity[static_cast<std::size_t>(e)];
+        const int cv = s > 0 ? l : layout.neighbour(l, face);
+        const int nv = s > 0 ? n : layout.neighbour(n, face);
+        const double vc = cv >= 0 ? v[static_cast<std::size_t>(cv)] * flux_fraction(state, phase, cv, e) : 0.0;
+        const double vn = nv >= 0 ? v[static_cast<std::size_t>(nv)] * flux_fraction(state, phase, nv, e) : 0.0;
+        flux_out = s * rho * (vc * half_c + vn * half_n) * width(l, t);
+        const double area = (half_c + half_n) * width(l, t);
+        if (link.kind == LinkKind::wall) {
+          diffusion = 0.5 * (viscosity(l) + viscosity(n)) * area / (0.5 * width(l, e));
+        } else if (link.kind != LinkKind::zero_gradient) {
+          // The edge between c, n and their neighbours m, m' across the face.
+          const int m = link.local;
+          const int m_plus = layout.neighbour(m, 2 * d + 1);
+          const double edge_mu = 0.25 * (viscosity(l) + viscosity(n) + viscosity(m) +
+                                         (m_plus >= 0 ? viscosity(m_plus) : viscosity(m)));
+          diffusion = edge_mu * area / (0.5 * (width(l, e) + width(m, e)));
+        }
+      }
+
+      switch (link.kind) {
+        case LinkKind::unknown: {
+          const double a_nb = diffusion + std::max(-flux_out, 0.0);
+          row.a += a_nb;
+          row.columns[row.count] = numbering.global[static_cast<std::size_t>(link.local)];
+          row.values[row.count++] = -a_nb;
+          row.neighbours_u += a_nb * at(link.local);
+          row.neighbours_a += a_nb;
+          if (m_limiter != Limiter::upwind) {
+            double upwind_upwind, upwind, downwind;
+            if (flux_out > 0.0) {
+              const Link& back = links[6 * static_cast<std::size_t>(l) + static_cast<std::size_t>(face ^ 1)];
+              upwind = at(l);
+              downwind = at(link.local);
+              upwind_upwind = back.kind == LinkKind::wall ? back.value
+                              : back.kind == LinkKind::zero_gradient ? at(l) : at(back.local);
+            } else {
+              const int beyond = layout.neighbour(link.local, face);
+              upwind = at(link.local);
+              downwind = at(l);
+              upwind_upwind = (beyond >= 0 && kind[static_cast<std::size_t>(beyond)] != FaceClass::none)
+                                  ? at(beyond) : upwind;
+            }
+            row.b -= flux_out * tvd_correction(m_limiter, upwind_upwind, upwind, downwind);
+          }
+          break;
+        }
+        case LinkKind::fixed:
+        case LinkKind::wall: {
+          const double value = link.kind == LinkKind::fixed ? at(link.local) : link.value;
+          const double a_nb = diffusion + std::max(-flux_out, 0.0);
+          row.a += a_nb;
+          row.b += a_nb * value;
+          break;
+        }
+        case LinkKind::zero_gradient:
+          // Open end: inflow brings u_P in, lagged (cancels at convergence).
+          row.a += std::max(-flux_out, 0.0);
+          row.b += std::max(-flux_out, 0.0) * at(l);
+          break;
+      }
+    }
+
+    const auto uc = static_cast<std::size_t>(l), un = static_cast<std::size_t>(n);
+    if (phase == gas || m_moves[gas])
+      row.b += row.fraction * (state.gas_pressure[uc] - state.gas_pressure[un]) * row.area;
+    if (phase == solids && layout.kind(n) == grid::CellKind::fluid && layout.kind(l) == grid::CellKind::fluid)
+      row.b += (state.solids_pressure[uc] - state.solids_pressure[un]) * row.area;
+    row.b += row.fraction * rho * m_deck.physics.gravity[ud] * row.volume;
+    if (phase == gas && !m_source[ud].empty()) row.b += m_source[ud][uc] * row.volume;
+    const double a_transient = row.fraction * rho * row.volume / dt;
+    row.a += a_transient;
+    row.b += a_transient * u_old[uc];
+  }
+}
+
+}  // namespace bagnold::solver

@@ -1,6 +1,7 @@
 #include "solver/petsc/linear_system.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace bagnold::solver {
 
@@ -20,7 +21,7 @@ void PetscSession::add_options(const std::string& options) {
 
 LinearSystem::LinearSystem(MPI_Comm comm, std::int64_t rows, std::int64_t first_row,
                            const std::string& prefix, const KrylovSettings& settings)
-    : m_comm(comm), m_rows(rows), m_first_row(first_row), m_settings(settings) {
+    : m_comm(comm), m_rows(rows), m_first_row(first_row), m_prefix(prefix), m_settings(settings) {
   const auto n = static_cast<PetscInt>(rows);
   // At most 7 nonzeros per row (a cell and its 6 face neighbours) on and off the diagonal block.
   petsc_check(MatCreateAIJ(comm, n, n, PETSC_DETERMINE, PETSC_DETERMINE, 7, nullptr, 7, nullptr,
@@ -28,20 +29,7 @@ LinearSystem::LinearSystem(MPI_Comm comm, std::int64_t rows, std::int64_t first_
   petsc_check(MatSetOption(m_matrix.get(), MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_FALSE),
               "MatSetOption");
   petsc_check(MatCreateVecs(m_matrix.get(), m_solution.out(), m_rhs.out()), "MatCreateVecs");
-  petsc_check(KSPCreate(comm, m_ksp.out()), "KSPCreate");
-  petsc_check(KSPSetOptionsPrefix(m_ksp.get(), prefix.c_str()), "KSPSetOptionsPrefix");
-  petsc_check(KSPSetType(m_ksp.get(), settings.ksp_type.c_str()), "KSPSetType");
-  PC pc = nullptr;
-  petsc_check(KSPGetPC(m_ksp.get(), &pc), "KSPGetPC");
-  petsc_check(PCSetType(pc, settings.pc_type.c_str()), "PCSetType");
-  petsc_check(KSPSetTolerances(m_ksp.get(), settings.relative_tolerance,
-                               settings.absolute_tolerance, PETSC_DEFAULT,
-                               settings.max_iterations), "KSPSetTolerances");
-  petsc_check(KSPSetInitialGuessNonzero(m_ksp.get(), PETSC_TRUE), "KSPSetInitialGuessNonzero");
-  // The outer iteration hands over a good guess: reduce its residual by the relative tolerance
-  // (PETSc's default measures against ||b||, which stalls the outer loop near that tolerance).
-  petsc_check(KSPConvergedDefaultSetUIRNorm(m_ksp.get()), "KSPConvergedDefaultSetUIRNorm");
-  petsc_check(KSPSetFromOptions(m_ksp.get()), "KSPSetFromOptions");
+  create_ksp();
 }
 
 void LinearSystem::set_row(std::int64_t row, const std::int64_t* columns, const double* values,
@@ -63,6 +51,23 @@ void LinearSystem::set_row(std::int64_t row, const std::int64_t* columns, const 
   }
   petsc_check(MatSetValues(m_matrix.get(), 1, &r, used, cols, vals, INSERT_VALUES), "MatSetValues");
   petsc_check(VecSetValue(m_rhs.get(), r, rhs, INSERT_VALUES), "VecSetValue");
+}
+
+void LinearSystem::create_ksp() {
+  petsc_check(KSPCreate(m_comm, m_ksp.out()), "KSPCreate");
+  petsc_check(KSPSetOptionsPrefix(m_ksp.get(), m_prefix.c_str()), "KSPSetOptionsPrefix");
+  petsc_check(KSPSetType(m_ksp.get(), m_settings.ksp_type.c_str()), "KSPSetType");
+  PC pc = nullptr;
+  petsc_check(KSPGetPC(m_ksp.get(), &pc), "KSPGetPC");
+  petsc_check(PCSetType(pc, m_settings.pc_type.c_str()), "PCSetType");
+  petsc_check(KSPSetTolerances(m_ksp.get(), m_settings.relative_tolerance,
+                               m_settings.absolute_tolerance, PETSC_DEFAULT,
+                               m_settings.max_iterations), "KSPSetTolerances");
+  petsc_check(KSPSetInitialGuessNonzero(m_ksp.get(), PETSC_TRUE), "KSPSetInitialGuessNonzero");
+  // The outer iteration hands over a good guess: reduce its residual by the relative tolerance
+  // (PETSc's default measures against ||b||, which stalls the outer loop near that tolerance).
+  petsc_check(KSPConvergedDefaultSetUIRNorm(m_ksp.get()), "KSPConvergedDefaultSetUIRNorm");
+  petsc_check(KSPSetFromOptions(m_ksp.get()), "KSPSetFromOptions");
 }
 
 void LinearSystem::reuse_preconditioner(bool reuse) {
@@ -106,6 +111,11 @@ SolveReport LinearSystem::solve(std::vector<double>& x) {
   petsc_check(VecGetArrayRead(m_solution.get(), &solved), "VecGetArrayRead");
   std::copy(solved, solved + m_rows, x.begin());
   petsc_check(VecRestoreArrayRead(m_solution.get(), &solved), "VecRestoreArrayRead");
+  // A matrix with Inf or NaN (a diverging outer iteration) can leave the preconditioner failed
+  // for every later solve, even of a healthy matrix: start the next solve from a fresh KSP.
+  int finite = std::all_of(x.begin(), x.begin() + m_rows, [](double v) { return std::isfinite(v); });
+  MPI_Allreduce(MPI_IN_PLACE, &finite, 1, MPI_INT, MPI_MIN, m_comm);
+  if (reason == KSP_DIVERGED_NANORINF || reason == KSP_DIVERGED_PC_FAILED || !finite) create_ksp();
   return report;
 }
 

@@ -44,9 +44,12 @@ class LinearSystem {
   SolveReport solve(std::vector<double>& x);
 
  private:
+  void create_ksp();  // (re)creates the KSP with the settings and the command-line options
+
   MPI_Comm m_comm;
   std::int64_t m_rows;
   std::int64_t m_first_row;
+  std::string m_prefix;
   KrylovSettings m_settings;
   PetscMat m_matrix;
   PetscVec m_rhs, m_solution;

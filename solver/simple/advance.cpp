@@ -34,6 +34,7 @@ StepResult FlowSolver::advance(run::FlowState& state, const run::FlowState& old,
     }
     if (!std::isfinite(largest)) return result;  // diverged: the caller backs off
     if (largest < m_deck.numerics.tolerance) {
+      if (m_moves[solids]) conserve_solids(state, old, dt);
       result.converged = true;
       return result;
     }

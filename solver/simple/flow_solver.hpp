@@ -119,6 +119,11 @@ class FlowSolver {
   double correct_pressure(run::FlowState& state);
   // Step 3: solids continuity with dP_s/dε_s implicit; returns its residual.
   double correct_volume_fraction(run::FlowState& state, const run::FlowState& old, double dt);
+  // Damps a compressing correction ε' where the closure's P_s departs from its linearization.
+  void limit_compression(const run::FlowState& state, std::vector<double>& correction);
+  // After convergence: ε_s from the converged fluxes in conservative form; ε_g = 1 − ε_s.
+  void conserve_solids(run::FlowState& state, const run::FlowState& old, double dt);
+  void update_gas_fraction(run::FlowState& state) const;
 
   // The velocity residuals are measured against: the largest face velocity in the domain, but at
   // least 1e-3 of the problem's reference speed (the fastest wall or inflow, or sqrt(|g| L)), so

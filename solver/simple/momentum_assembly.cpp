@@ -93,7 +93,6 @@ void FlowSolver::assemble_momentum(Phase phase, int d, const run::FlowState& sta
           diffusion = edge_mu * area / (0.5 * (width(l, e) + width(m, e)));
         }
       }
-
       switch (link.kind) {
         case LinkKind::unknown: {
           const double a_nb = diffusion + std::max(-flux_out, 0.0);

@@ -8,6 +8,8 @@
 #include "solver/simple/flow_solver.hpp"
 #include "solver/strain_rate.hpp"
 
+#include <algorithm>
+
 namespace bagnold::solver {
 
 void FlowSolver::evaluate_solids_stress(run::FlowState& state) {
@@ -24,7 +26,7 @@ void FlowSolver::evaluate_solids_stress(run::FlowState& state) {
     if (layout.kind(l) != grid::CellKind::fluid) continue;
     const auto i = static_cast<std::size_t>(l);
     cells.push_back(l);
-    fraction.push_back(state.solids_fraction[i]);
+    fraction.push_back(std::max(state.solids_fraction[i], 0.0));  // round-off below 0 at an emptying cell
     rate.push_back(m_strain_rate[i]);
     divergence.push_back(m_divergence[i]);
   }

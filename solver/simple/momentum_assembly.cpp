@@ -12,7 +12,7 @@
 //       form: the continuity imbalance is subtracted, so a_P = Σ a_nb + transient and the
 //       rows stay diagonally dominant while ε_m is still changing within the step);
 //   b −= F (φ_f^TVD − φ_upwind)               (TVD by deferred correction).
-// Sources: ε_m (P_c − P_n) A; for the solids also (P_s,c − P_s,n) A between fluid cells;
+// Sources: ε_m (P_c − P_n) A; for the solids also (P_s,c − P_s,n) A (P_s = 0 beyond an outlet);
 // ε_m ρ_m g_d V; the implicit-Euler term ε_m ρ_m V / dt (u_P − u_P^old); the gas's optional
 // manufactured source.
 #include <algorithm>
@@ -139,8 +139,8 @@ void FlowSolver::assemble_momentum(Phase phase, int d, const run::FlowState& sta
     const auto uc = static_cast<std::size_t>(l), un = static_cast<std::size_t>(n);
     if (phase == gas || m_moves[gas])
       row.b += row.fraction * (state.gas_pressure[uc] - state.gas_pressure[un]) * row.area;
-    if (phase == solids && layout.kind(n) == grid::CellKind::fluid && layout.kind(l) == grid::CellKind::fluid)
-      row.b += (state.solids_pressure[uc] - state.solids_pressure[un]) * row.area;
+    // P_s = 0 in a pressure-boundary cell: the solids leaving through an outlet are free of stress.
+    if (phase == solids) row.b += (state.solids_pressure[uc] - state.solids_pressure[un]) * row.area;
     row.b += row.fraction * rho * m_deck.physics.gravity[ud] * row.volume;
     if (phase == gas && !m_source[ud].empty()) row.b += m_source[ud][uc] * row.volume;
     const double a_transient = row.fraction * rho * row.volume / dt;

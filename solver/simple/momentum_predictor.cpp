@@ -121,10 +121,13 @@ void FlowSolver::predict_momentum(int d, run::FlowState& state, const run::FlowS
     const double D_s = s ? correction_diagonal(A_s / alpha, s->neighbours_a, m_simplec) : 0.0;
     const double eps_g = g ? g->fraction : 0.0;
     const double eps_s = m_moves[solids] ? rows[solids][r].fraction : 0.0;
-    const bool dense_pair = layout.kind(l) == grid::CellKind::fluid && layout.kind(n) == grid::CellKind::fluid;
     // K ≥ 0: a closure whose P_s falls with ε_s at fixed strain rate (kinetic theory in its
-    // dilute range) would make the correction anti-diffusive; that part stays explicit.
-    const double K = dense_pair ? std::max(0.5 * (m_pressure_derivative[ul] + m_pressure_derivative[static_cast<std::size_t>(n)]), 0.0) : 0.0;
+    // dilute range) would make the correction anti-diffusive; that part stays explicit. At an
+    // outlet (P_s = 0 beyond it) the fluid cell's K alone.
+    const bool l_fluid = layout.kind(l) == grid::CellKind::fluid, n_fluid = layout.kind(n) == grid::CellKind::fluid;
+    const double K_l = l_fluid ? m_pressure_derivative[ul] : 0.0;
+    const double K_n = n_fluid ? m_pressure_derivative[static_cast<std::size_t>(n)] : 0.0;
+    const double K = std::max(l_fluid && n_fluid ? 0.5 * (K_l + K_n) : K_l + K_n, 0.0);
     double d_g = 0.0, d_s = 0.0, e = 0.0;
     if (g && s) {
       const double det = D_g * D_s - beta_v * beta_v;

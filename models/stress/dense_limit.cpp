@@ -15,12 +15,6 @@ Real smoothed_power(Real excess, double exponent, double smoothing) {
   return excess * excess * pow(excess * excess + smoothing * smoothing, 0.5 * exponent - 1.0);
 }
 
-CoefficientSpec dilute_cutoff_spec() {
-  return real_spec("dilute_cutoff", "-", 1e-6, 1e-12, 0.01,
-                   "φ_min [-]: below this solids fraction the kinetic stresses and T are zero "
-                   "(homogeneous-shear kinetic theory diverges as 1/φ there).");
-}
-
 std::vector<CoefficientSpec> DenseLimit::specs() {
   return {
       real_spec("jamming_margin", "-", 0.01, 1e-9, 0.1,
@@ -32,15 +26,13 @@ std::vector<CoefficientSpec> DenseLimit::specs() {
       real_spec("onset_smoothing", "-", 1e-4, 0.0, 0.01,
                 "x_s [-]: volume-fraction width over which the 2/3 power of the quasi-static "
                 "pressure is smoothed so that dP_s/dε_s is finite at onset."),
-      dilute_cutoff_spec(),
   };
 }
 
 DenseLimit DenseLimit::read(const Coefficients& c) {
   return {.jamming_margin = real_coefficient(c, "jamming_margin"),
           .quasi_static_scale = real_coefficient(c, "quasi_static_scale"),
-          .onset_smoothing = real_coefficient(c, "onset_smoothing"),
-          .dilute_cutoff = real_coefficient(c, "dilute_cutoff")};
+          .onset_smoothing = real_coefficient(c, "onset_smoothing")};
 }
 
 template <class Real>

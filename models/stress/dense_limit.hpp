@@ -11,9 +11,7 @@
 //     g(x) → x^{2/3} for x ≫ x_s (Eq. 8's exponent) and g has a finite slope at onset, so
 //     dP_s/dε_s stays finite. It carries the yield shear stress τ_qs = η_s(μ) P_qs
 //     (Mohr–Coulomb with App. A's yield stress ratio), whose viscosity is regularized.
-//  3. Dilute cutoff. Homogeneous-shear kinetic theory gives T ~ (γ̇d)²/φ² and p ~ 1/φ as φ → 0;
-//     below φ_min (dilute_cutoff) the stresses and T are set to zero (no material, no stress;
-//     the solver skips such cells anyway).
+// The other end, φ → 0, is dilute_limit.hpp's.
 
 #include <vector>
 
@@ -28,14 +26,10 @@ namespace bagnold::models {
 template <class Real>
 Real smoothed_power(Real excess, double exponent, double smoothing);
 
-// The dilute_cutoff key φ_min (item 3 above), shared with mfix-default.
-CoefficientSpec dilute_cutoff_spec();
-
 struct DenseLimit {
   double jamming_margin = 0.01;     // δ [-]
   double quasi_static_scale = 1.0;  // s [-]
   double onset_smoothing = 1e-4;    // x_s [-]
-  double dilute_cutoff = 1e-6;      // φ_min [-]
 
   static std::vector<CoefficientSpec> specs();
   static DenseLimit read(const Coefficients& c);

@@ -56,15 +56,17 @@ Real algebraic_sqrt_temperature(const LunCoefficients<Real>& c, double shear_rat
 }
 }  // namespace
 
-MfixDefault::MfixDefault(const Constants& constants, const ViscosityLimits& limits)
-    : m_constants(constants), m_limits(limits) {}
+MfixDefault::MfixDefault(const Constants& constants, const DiluteLimit& dilute,
+                         const ViscosityLimits& limits)
+    : m_constants(constants), m_dilute(dilute), m_limits(limits) {}
 
 void MfixDefault::evaluate(const Material& material, const SolidsState& in,
                            SolidsStress& out) const {
   require_valid_material(material, name());
   const double packed_fraction = 1.0 - m_constants.packed_gas_fraction;
   const double sin_friction_angle = std::sin(m_constants.internal_friction_angle * pi / 180.0);
-  evaluate_cells(in, out, [&](double phi, double shear_rate, double divergence) {
+  evaluate_cells_dilute_limited(m_dilute, in, out, [&](double phi, double shear_rate,
+                                                       double divergence) {
     PointStress p;
     p.granular_temperature = 0.0;
     if (phi > packed_fraction) {
@@ -77,7 +79,6 @@ void MfixDefault::evaluate(const Material& material, const SolidsState& in,
           m_limits.rate_independent_viscosity(p.pressure * sin_friction_angle, shear_rate);
       return p;
     }
-    if (phi < m_constants.dilute_cutoff) return p;
     const auto c = lun_coefficients(Dual::variable(phi), material);
     const Dual sqrt_temperature = algebraic_sqrt_temperature(c, shear_rate, divergence);
     const Dual pressure = c.pressure * sqrt_temperature * sqrt_temperature;
@@ -95,8 +96,7 @@ Constants read_constants(const Coefficients& c) {
   return {.packed_gas_fraction = real_coefficient(c, "packed_gas_fraction"),
           .plastic_coefficient = real_coefficient(c, "plastic_coefficient"),
           .plastic_exponent = real_coefficient(c, "plastic_exponent"),
-          .internal_friction_angle = real_coefficient(c, "internal_friction_angle"),
-          .dilute_cutoff = real_coefficient(c, "dilute_cutoff")};
+          .internal_friction_angle = real_coefficient(c, "internal_friction_angle")};
 }
 
 [[maybe_unused]] const bool registered = stress_registry().add(
@@ -110,11 +110,12 @@ Constants read_constants(const Coefficients& c) {
            real_spec("plastic_exponent", "-", 10.0, 1.0, 20.0,
                      "n [-]: exponent of the plastic pressure (MFIX: 10)."),
            real_spec("internal_friction_angle", "deg", 30.0, 0.0, 90.0,
-                     "φ_f [deg] (MFIX PHI): Schaeffer's frictional viscosity P* sin φ_f/γ̇_s."),
-           dilute_cutoff_spec()},
+                     "φ_f [deg] (MFIX PHI): Schaeffer's frictional viscosity P* sin φ_f/γ̇_s.")},
+          DiluteLimit::specs(),
           ViscosityLimits::specs(100.0)}),
      .make = [](const Coefficients& c) -> std::unique_ptr<SolidsStressModel> {
-       return std::make_unique<MfixDefault>(read_constants(c), ViscosityLimits::read(c));
+       return std::make_unique<MfixDefault>(read_constants(c), DiluteLimit::read(c),
+                                             ViscosityLimits::read(c));
      }});
 }  // namespace
 

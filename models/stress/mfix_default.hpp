@@ -14,6 +14,7 @@
 
 #include <string>
 
+#include "models/stress/dilute_limit.hpp"
 #include "models/stress/regularization.hpp"
 #include "models/stress/solids_stress.hpp"
 
@@ -24,18 +25,18 @@ struct Constants {
   double plastic_coefficient = 1e24;      // A [Pa]
   double plastic_exponent = 10.0;         // n [-]
   double internal_friction_angle = 30.0;  // φ_f [deg]
-  double dilute_cutoff = 1e-6;            // φ_min [-]
 };
 
 class MfixDefault final : public SolidsStressModel {
  public:
-  MfixDefault(const Constants& constants, const ViscosityLimits& limits);
+  MfixDefault(const Constants& constants, const DiluteLimit& dilute, const ViscosityLimits& limits);
   std::string name() const override { return "mfix-default"; }
   void evaluate(const Material& material, const SolidsState& in, SolidsStress& out) const override;
   bool defines_temperature() const override { return true; }
 
  private:
   Constants m_constants;
+  DiluteLimit m_dilute;
   ViscosityLimits m_limits;
 };
 

@@ -81,8 +81,9 @@ template SteadyState<double> steady_state(double, const Material&, const Constan
                                           const DenseLimit&);
 template SteadyState<Dual> steady_state(Dual, const Material&, const Constants&, const DenseLimit&);
 
-Mkt::Mkt(const Constants& constants, const DenseLimit& dense, const ViscosityLimits& limits)
-    : m_constants(constants), m_dense(dense), m_limits(limits) {}
+Mkt::Mkt(const Constants& constants, const DenseLimit& dense, const DiluteLimit& dilute,
+         const ViscosityLimits& limits)
+    : m_constants(constants), m_dense(dense), m_dilute(dilute), m_limits(limits) {}
 
 void Mkt::evaluate(const Material& material, const SolidsState& in, SolidsStress& out) const {
   require_valid_material(material, name());
@@ -90,12 +91,8 @@ void Mkt::evaluate(const Material& material, const SolidsState& in, SolidsStress
   const double d = material.diameter;
   const double critical = chialvo2012::critical_fraction(material.friction);
   const double yield_ratio = chialvo2012::yield_stress_ratio(material.friction);
-  evaluate_cells(in, out, [&](double phi, double shear_rate, double /*divergence*/) {
+  evaluate_cells_dilute_limited(m_dilute, in, out, [&](double phi, double shear_rate, double) {
     PointStress p;
-    if (phi < m_dense.dilute_cutoff) {
-      p.granular_temperature = 0.0;
-      return p;
-    }
     const auto s = steady_state(Dual::variable(phi), material, m_constants, m_dense);
     // Table I: p = ρ_s H T with T = M (γ̇d)².
     const auto k = kinetic_dense_pressure(phi, shear_rate, material, s.pressure_factor,
@@ -147,9 +144,10 @@ Constants read_constants(const Coefficients& c) {
                        "n [-], exponent of (1 − e²) in ψ, App. B Eq. 32: report = −2/3 as printed, "
                        "openfoam = −3/2 as in the authors' OpenFOAM code.")},
           DenseLimit::specs(),
+          DiluteLimit::specs(),
           ViscosityLimits::specs()}),
      .make = [](const Coefficients& c) -> std::unique_ptr<SolidsStressModel> {
-       return std::make_unique<Mkt>(read_constants(c), DenseLimit::read(c),
+       return std::make_unique<Mkt>(read_constants(c), DenseLimit::read(c), DiluteLimit::read(c),
                                     ViscosityLimits::read(c));
      }});
 }  // namespace

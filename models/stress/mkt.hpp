@@ -16,6 +16,7 @@
 
 #include "models/dual.hpp"
 #include "models/stress/dense_limit.hpp"
+#include "models/stress/dilute_limit.hpp"
 #include "models/stress/regularization.hpp"
 #include "models/stress/solids_stress.hpp"
 
@@ -66,7 +67,8 @@ SteadyState<Real> steady_state(Real phi, const Material& material, const Constan
 
 class Mkt final : public SolidsStressModel {
  public:
-  Mkt(const Constants& constants, const DenseLimit& dense, const ViscosityLimits& limits);
+  Mkt(const Constants& constants, const DenseLimit& dense, const DiluteLimit& dilute,
+      const ViscosityLimits& limits);
   std::string name() const override { return "mkt"; }
   void evaluate(const Material& material, const SolidsState& in, SolidsStress& out) const override;
   bool defines_temperature() const override { return true; }
@@ -74,6 +76,7 @@ class Mkt final : public SolidsStressModel {
  private:
   Constants m_constants;
   DenseLimit m_dense;
+  DiluteLimit m_dilute;
   ViscosityLimits m_limits;
 };
 

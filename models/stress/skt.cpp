@@ -30,8 +30,9 @@ KineticState<Real> kinetic_state(Real phi, const Material& material, rdf::Kind r
 template KineticState<double> kinetic_state(double, const Material&, rdf::Kind, const DenseLimit&);
 template KineticState<Dual> kinetic_state(Dual, const Material&, rdf::Kind, const DenseLimit&);
 
-Skt::Skt(rdf::Kind radial, const DenseLimit& dense, const ViscosityLimits& limits)
-    : m_radial(radial), m_dense(dense), m_limits(limits) {}
+Skt::Skt(rdf::Kind radial, const DenseLimit& dense, const DiluteLimit& dilute,
+         const ViscosityLimits& limits)
+    : m_radial(radial), m_dense(dense), m_dilute(dilute), m_limits(limits) {}
 
 void Skt::evaluate(const Material& material, const SolidsState& in, SolidsStress& out) const {
   require_valid_material(material, name());
@@ -39,12 +40,8 @@ void Skt::evaluate(const Material& material, const SolidsState& in, SolidsStress
   const double d = material.diameter;
   const double critical = chialvo2012::critical_fraction(material.friction);
   const double yield_ratio = chialvo2012::yield_stress_ratio(material.friction);
-  evaluate_cells(in, out, [&](double phi, double shear_rate, double /*divergence*/) {
+  evaluate_cells_dilute_limited(m_dilute, in, out, [&](double phi, double shear_rate, double) {
     PointStress p;
-    if (phi < m_dense.dilute_cutoff) {
-      p.granular_temperature = 0.0;
-      return p;
-    }
     const auto s = kinetic_state(Dual::variable(phi), material, m_radial, m_dense);
     // Eq. 1 with T = (J/K)(γ̇d)²: p = ρ_s H (J/K)(γ̇d)², differentiated at fixed γ̇.
     const auto k = kinetic_dense_pressure(phi, shear_rate, material, s.pressure_factor,
@@ -72,11 +69,12 @@ namespace {
                        "g0 [-]: carnahan-starling (App. B Eq. 11), torquato (Eq. 12, product form, "
                        "φ_c(μ)) or mkt (Eq. 31, φ_c(μ)), to share MKT's jamming point.")},
           DenseLimit::specs(),
+          DiluteLimit::specs(),
           ViscosityLimits::specs()}),
      .make = [](const Coefficients& c) -> std::unique_ptr<SolidsStressModel> {
        return std::make_unique<Skt>(
            rdf::kind_from_name(string_coefficient(c, "radial_distribution")), DenseLimit::read(c),
-           ViscosityLimits::read(c));
+           DiluteLimit::read(c), ViscosityLimits::read(c));
      }});
 }  // namespace
 

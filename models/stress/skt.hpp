@@ -13,6 +13,7 @@
 #include "models/dual.hpp"
 #include "models/rdf/radial_distribution.hpp"
 #include "models/stress/dense_limit.hpp"
+#include "models/stress/dilute_limit.hpp"
 #include "models/stress/regularization.hpp"
 #include "models/stress/solids_stress.hpp"
 
@@ -35,7 +36,8 @@ KineticState<Real> kinetic_state(Real phi, const Material& material, rdf::Kind r
 
 class Skt final : public SolidsStressModel {
  public:
-  Skt(rdf::Kind radial, const DenseLimit& dense, const ViscosityLimits& limits);
+  Skt(rdf::Kind radial, const DenseLimit& dense, const DiluteLimit& dilute,
+      const ViscosityLimits& limits);
   std::string name() const override { return "skt"; }
   void evaluate(const Material& material, const SolidsState& in, SolidsStress& out) const override;
   bool defines_temperature() const override { return true; }
@@ -43,6 +45,7 @@ class Skt final : public SolidsStressModel {
  private:
   rdf::Kind m_radial;
   DenseLimit m_dense;
+  DiluteLimit m_dilute;
   ViscosityLimits m_limits;
 };
 

@@ -24,8 +24,10 @@ Material glass(double friction, double restitution = 0.9) {
   m.restitution = restitution;
   return m;
 }
-// Regularization off, so the rheometer's τ = μ_s γ̇ is the model's τ exactly.
-const models::Coefficients unregularized{{"min_strain_rate", 0.0}, {"max_viscosity", 1e12}};
+// Regularization off, so the rheometer's τ = μ_s γ̇ is the model's τ exactly; the dilute
+// formulas as printed (no ideal-gas treatment below the pressure minimum).
+const models::Coefficients unregularized{
+    {"min_strain_rate", 0.0}, {"max_viscosity", 1e12}, {"dilute_stress", std::string("kinetic")}};
 }  // namespace
 
 TEST(Mkt, EffectiveRestitutionAndPsiFollowEquations22And32) {

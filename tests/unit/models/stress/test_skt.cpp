@@ -14,7 +14,9 @@
 namespace bagnold::tests {
 
 namespace {
-const models::Coefficients unregularized{{"min_strain_rate", 0.0}, {"max_viscosity", 1e12}};
+// The formulas as printed: no viscosity regularization, no dilute (ideal-gas) treatment.
+const models::Coefficients unregularized{
+    {"min_strain_rate", 0.0}, {"max_viscosity", 1e12}, {"dilute_stress", std::string("kinetic")}};
 }
 
 TEST(Skt, SteadyShearIsGarzoDuftyEquations15To18) {

@@ -13,8 +13,8 @@
 namespace bagnold::tests {
 
 TEST(StressRegistry, ListsExactlyTheShippedModels) {
-  const std::vector<std::string> shipped{"mfix-default", "mkt", "skt", "steady-shear",
-                                         "steady-shear-cohesive"};
+  const std::vector<std::string> shipped{"mfix-default", "mkt",          "plastic",
+                                         "skt",          "steady-shear", "steady-shear-cohesive"};
   EXPECT_EQ(models::stress_registry().names(), shipped);
   for (const auto& name : shipped) EXPECT_EQ(make_model(name)->name(), name);
 }

@@ -12,7 +12,9 @@ namespace bagnold::solver {
 StepResult FlowSolver::advance(run::FlowState& state, const run::FlowState& old, double dt) {
   StepResult result;
   apply_boundary_values(state);
-  const bool trace = std::getenv("BAGNOLD_TRACE") && m_domain.layout.comm().is_root();
+  // BAGNOLD_TRACE=1: every outer iteration's residuals and the cell of the largest, on stderr.
+  const bool trace = std::getenv("BAGNOLD_TRACE") != nullptr;
+  const bool root = m_domain.layout.comm().is_root();
   for (int iteration = 1; iteration <= m_deck.numerics.max_outer_iterations; ++iteration) {
     // The multigrid hierarchy of the pressure correction is built once per step and reused by
     // the later outer iterations (the matrix changes only through d); it dominated the run time.
@@ -28,9 +30,13 @@ StepResult FlowSolver::advance(run::FlowState& state, const run::FlowState& old,
     result.iterations = iteration;
     const double largest = result.residuals.largest();
     if (trace) {
-      std::fprintf(stderr, "  it %d:", iteration);
-      for (const double r : result.residuals.value) std::fprintf(stderr, " %.3e", r);
-      std::fprintf(stderr, "\n");
+      const auto where = worst_cell(result.residuals.worst());  // collective
+      if (root) {
+        std::fprintf(stderr, "  it %d:", iteration);
+        for (const double r : result.residuals.value) std::fprintf(stderr, " %.3e", r);
+        std::fprintf(stderr, "  worst at (%d, %d, %d)\n", where.cell[0], where.cell[1],
+                     where.cell[2]);
+      }
     }
     if (!std::isfinite(largest)) return result;  // diverged: the caller backs off
     if (largest < m_deck.numerics.tolerance) {

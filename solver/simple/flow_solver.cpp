@@ -82,9 +82,12 @@ FlowSolver::FlowSolver(const deck::Deck& deck, const parallel::Domain& domain)
   m_pressure_derivative.assign(local, 0.0);
   if (deck.solids.enabled && deck.gas.enabled)
     m_drag = models::drag_registry().create(deck.models.drag.name, deck.models.drag.coefficients);
-  if (m_moves[solids])
+  if (m_moves[solids]) {
     m_stress = models::stress_registry().create(deck.models.solids_stress.name,
                                                 deck.models.solids_stress.coefficients);
+    m_solids_walls = std::make_unique<SolidsWalls>(deck, domain.regions.regions,
+                                                   m_stress->defines_temperature());
+  }
   m_pressure_numbering = std::make_unique<UnknownNumbering>(
       layout, [&](int l) { return layout.kind(l) == grid::CellKind::fluid; });
   if (m_moves[gas]) {
@@ -149,6 +152,16 @@ double FlowSolver::face_fraction(const run::FlowState& state, Phase phase, int l
   const auto& eps = phase == gas ? state.gas_fraction : state.solids_fraction;
   const int n = m_domain.layout.neighbour(local, 2 * d + 1);
   if (n < 0) return eps[static_cast<std::size_t>(local)];
+  const auto& layout = m_domain.layout;
+  if (layout.kind(local) == grid::CellKind::boundary || layout.kind(n) == grid::CellKind::boundary) {
+    // A boundary face carries what flows through it: an inlet's own fraction coming in, the
+    // fluid cell's going out (the mean of the two would feed a bed only half its inflow's gas).
+    const auto& velocity = phase == gas ? state.gas_velocity : state.solids_velocity;
+    const double u = velocity[static_cast<std::size_t>(d)][static_cast<std::size_t>(local)];
+    const bool local_is_fluid = layout.kind(local) != grid::CellKind::boundary;
+    const bool from_local = u > 0.0 || (u == 0.0 && local_is_fluid);
+    return eps[static_cast<std::size_t>(from_local ? local : n)];
+  }
   const double wc = width(local, d), wn = width(n, d);
   return (eps[static_cast<std::size_t>(local)] * wn + eps[static_cast<std::size_t>(n)] * wc) /
          (wc + wn);

@@ -3,11 +3,13 @@
 //
 // For each unknown face velocity u_P (control volume between the centres of its owning cell c
 // and c's + neighbour n), and each of its six faces:
-//   F   outward mass flux ρ_m ε_m u A through the face, from the current iterate (ε_m carried:
-//       the gas's linear face value, the solids' upwind value, flux_fraction);
+//   F   outward mass flux ρ_m ε_m u A through the face, from the current iterate: the mean of
+//       the continuity fluxes of the two cell faces it spans (ε_m carried: the gas's linear
+//       face value, the solids' upwind value, flux_fraction);
 //   D   μ_eff A / δ, with δ the distance to the neighbour (half a cell to a wall), μ_eff the
 //       phase's effective viscosity (ε_g μ_g, or the closure's μ_s) averaged over the cells
-//       around the face;
+//       around the face; at a solids wall with a partial-slip law (boundary.solids_wall),
+//       c_w A instead, with c_w ≤ μ_s/δ from the wall law (solids_wall.cpp);
 //   a_nb = D + max(−F, 0),  a_P += a_nb       (first-order upwind, implicit, non-conservative
 //       form: the continuity imbalance is subtracted, so a_P = Σ a_nb + transient and the
 //       rows stay diagonally dominant while ε_m is still changing within the step);
@@ -31,7 +33,6 @@ void FlowSolver::assemble_momentum(Phase phase, int d, const run::FlowState& sta
   const auto& velocity = phase == gas ? state.gas_velocity : state.solids_velocity;
   const auto& u = velocity[ud];
   const auto& u_old = (phase == gas ? old.gas_velocity : old.solids_velocity)[ud];
-  const auto& eps = phase == gas ? state.gas_fraction : state.solids_fraction;
   const auto& mu = m_viscosity[phase];
   const auto& links = faces(phase).links[ud];
   const auto& kind = faces(phase).kind[ud];
@@ -67,10 +68,14 @@ void FlowSolver::assemble_momentum(Phase phase, int d, const run::FlowState& sta
       double flux_out = 0.0, diffusion = 0.0;
       if (e == d) {
         // The control-volume face at the centre of n (s > 0) or of c (s < 0).
+        // Its mass flux is the mean of the continuity fluxes through the two cell faces it lies
+        // between (ε_m carried as continuity carries it), so momentum is convected only where
+        // mass is: an empty cell above a bed's free surface brings the face below none.
         const bool has_far = link.kind == LinkKind::unknown || link.kind == LinkKind::fixed;
         const int centre = s > 0 ? n : l;
-        flux_out = s * rho * eps[static_cast<std::size_t>(centre)] * row.area * 0.5 *
-                   (at(l) + (has_far ? at(link.local) : at(l)));
+        const double own = at(l) * flux_fraction(state, phase, l, d);
+        const double far = has_far ? at(link.local) * flux_fraction(state, phase, link.local, d) : own;
+        flux_out = s * rho * row.area * 0.5 * (own + far);
         diffusion = has_far ? viscosity(centre) * row.area / width(centre, d) : 0.0;
       } else {
         // The face between the owning cells' faces along e: half of c's and half of n's.
@@ -83,7 +88,11 @@ void FlowSolver::assemble_momentum(Phase phase, int d, const run::FlowState& sta
         flux_out = s * rho * (vc * half_c + vn * half_n) * width(l, t);
         const double area = (half_c + half_n) * width(l, t);
         if (link.kind == LinkKind::wall) {
-          diffusion = 0.5 * (viscosity(l) + viscosity(n)) * area / (0.5 * width(l, e));
+          // No slip: μ A/δ. A solids partial-slip wall: c_w A, c_w ≤ μ_s/δ (solids_wall.cpp).
+          const double wall_distance = 0.5 * width(l, e);
+          diffusion = phase == solids && m_solids_walls && m_solids_walls->partial(link.region)
+                          ? solids_wall_coefficient(state, link, l, d, e, wall_distance) * area
+                          : 0.5 * (viscosity(l) + viscosity(n)) * area / wall_distance;
         } else if (link.kind != LinkKind::zero_gradient) {
           // The edge between c, n and their neighbours m, m' across the face.
           const int m = link.local;

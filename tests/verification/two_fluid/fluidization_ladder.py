@@ -31,7 +31,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from snapshots import G, Snapshot, snapshot_paths  # noqa: E402
 
 RHO_S, RHO_G, MU, D = 2500.0, 1.2, 1.8e-5, 5e-4   # as in packed_bed.toml
-PACKED_RUNGS = [0.16, 0.22, 0.26]               # deck inlet velocities [m/s]
+PACKED_RUNGS = [0.10, 0.15, 0.19]               # deck inlet velocities [m/s]
 FLUIDIZED_RUNGS = [0.32, 0.36]
 UMF_TOLERANCE = 0.03
 PLATEAU_TOLERANCE = 0.03

@@ -64,6 +64,7 @@ struct Classifier {
     }
     if (boundary < 0) return link;  // nothing there: zero gradient
     const auto& r = region_at(boundary);
+    link.region = domain.flags.region[static_cast<std::size_t>(boundary)];
     switch (type_at(boundary)) {
       case BoundaryType::no_slip_wall: link.kind = LinkKind::wall; break;
       case BoundaryType::moving_wall:
@@ -119,6 +120,7 @@ VelocityFaces::VelocityFaces(const parallel::Domain& domain, bool solids_phase) 
                                           ? domain.grid.natural(to) : -1;
           link = classifier.side_condition(other, d);
           link.local = m;
+          if (link.kind != LinkKind::wall) link.region = -1;
         }
       }
     }

@@ -30,6 +30,7 @@ struct Link {
   int local = -1;
   LinkKind kind = LinkKind::zero_gradient;
   double value = 0.0;
+  int region = -1;  // wall: the boundary region across it (its solids wall condition)
 };
 
 struct VelocityFaces {

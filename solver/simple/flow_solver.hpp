@@ -29,6 +29,7 @@
 #include "models/stress/solids_stress.hpp"
 #include "solver/convection_limiter.hpp"
 #include "solver/petsc/linear_system.hpp"
+#include "solver/simple/solids_wall.hpp"
 #include "solver/unknown_numbering.hpp"
 #include "solver/velocity_faces.hpp"
 #include "src/deck/deck.hpp"
@@ -137,6 +138,10 @@ class FlowSolver {
   // Whether the solids momentum at this face is solved (ε_s above the threshold beside it).
   bool solids_present(const run::FlowState& state, int local, int d) const;
   void record_worst(int equation, double row_residual, int local);
+  // c_w [Pa s/m] of a partial-slip solids wall across `link` from the tangential velocity d of
+  // cell l; e the wall-normal direction, δ the wall distance (solids_wall.cpp).
+  double solids_wall_coefficient(const run::FlowState& state, const Link& link, int l, int d,
+                                 int e, double wall_distance) const;
 
   double width(int local, int d) const { return m_width[static_cast<std::size_t>(local) * 3 + static_cast<std::size_t>(d)]; }
   double face_area(int local, int d) const;  // area of the cell's face normal to d
@@ -163,6 +168,7 @@ class FlowSolver {
   std::array<int, equation_count> m_worst_local{};     // and its local cell
   std::unique_ptr<models::DragLaw> m_drag;                  // null without moving phases to couple
   std::unique_ptr<models::SolidsStressModel> m_stress;      // null unless the solids move
+  std::unique_ptr<SolidsWalls> m_solids_walls;              // null unless the solids move
   std::vector<double> m_beta;                      // β [kg/(m³ s)] per local cell
   std::array<std::vector<double>, 2> m_viscosity;  // ε_g μ_g and μ_s [Pa s] per local cell
   std::vector<double> m_pressure_derivative;       // dP_s/dε_s [Pa] per local cell

@@ -68,6 +68,11 @@ struct BoundaryRegion {
   std::array<double, 3> gas_velocity{0, 0, 0};     // [m/s] mass inflow
   std::array<double, 3> solids_velocity{0, 0, 0};  // [m/s] mass inflow
   double solids_fraction = 0.0;               // ε_s of the inflow [-]
+  // Walls (no_slip_wall, moving_wall): the solids' tangential condition; the gas keeps `type`.
+  std::string solids_wall = "no-slip";  // no-slip | free-slip | johnson-jackson | dense-slip
+  double specularity = 0.0;        // φ' [-], johnson-jackson
+  double wall_restitution = 0.0;   // e_w [-], johnson-jackson
+  double wall_friction = 0.0;      // μ_w [-], dense-slip
 };
 
 struct Gas {

@@ -5,7 +5,10 @@
 #include <sstream>
 
 #include "models/drag/drag_law.hpp"
+#include "models/stress/friction_table.hpp"
 #include "models/stress/solids_stress.hpp"
+#include "models/wall/dense_slip.hpp"
+#include "models/wall/johnson_jackson.hpp"
 #include "src/deck/sections.hpp"
 #include "src/util/closest_match.hpp"
 
@@ -280,6 +283,77 @@ void check_boundaries(const toml::table& root, Deck& deck, Diagnostics& diag) {
   }
 }
 
+// The solids wall condition of each [[boundary]]: only on no_slip_wall / moving_wall regions,
+// with exactly the parameters its law takes, and within the law's limits (models/wall/).
+void check_solids_walls(const toml::table& root, const Deck& deck, Diagnostics& diag) {
+  const auto* array = root.get_as<toml::array>("boundary");
+  if (!array) return;
+  const std::vector<std::pair<std::string, std::string>> parameters = {
+      {"specularity", "johnson-jackson"}, {"wall_restitution", "johnson-jackson"},
+      {"wall_friction", "dense-slip"}};
+  for (std::size_t i = 0; i < deck.boundaries.size() && i < array->size(); ++i) {
+    const auto& b = deck.boundaries[i];
+    const auto* table = (*array)[i].as_table();
+    if (!table) continue;
+    const std::string path = "boundary[" + std::to_string(i) + "]";
+    auto where = [&](const std::string& name) {
+      const toml::node* node = table->get(name);
+      return node ? node->source() : table->source();
+    };
+    const bool wall = b.type == "no_slip_wall" || b.type == "moving_wall";
+    // The resolved text (bagnold run's log) writes every key: the defaults must load again.
+    if (b.solids_wall != "no-slip" && !wall) {
+      diag.error(where("solids_wall"), path + ".solids_wall",
+                 "applies to type = \"no_slip_wall\" or \"moving_wall\" only, this region is \"" +
+                     b.type + "\"" +
+                     (b.type == "free_slip_wall" ? " (free slip for both phases already)" : ""));
+      continue;
+    }
+    for (const auto& [name, law] : parameters) {
+      const double value = name == "specularity"        ? b.specularity
+                           : name == "wall_restitution" ? b.wall_restitution
+                                                        : b.wall_friction;
+      if (table->get(name) && b.solids_wall != law && value != 0.0)
+        diag.error(where(name), path + "." + name,
+                   "applies only to solids_wall = \"" + law + "\" (this region has \"" +
+                       b.solids_wall + "\")");
+      else if (!table->get(name) && b.solids_wall == law)
+        diag.error(table->source(), path + "." + name,
+                   "missing key required by solids_wall = \"" + law + "\" (a real number)");
+    }
+    if (!deck.solids.enabled) continue;
+    const auto& material = deck.solids.material;
+    if (b.solids_wall == "dense-slip" && table->get("wall_friction")) {
+      try {
+        const models::wall::DenseSlip check(material, {.wall_friction = b.wall_friction},
+                                            models::chialvo2012::yield_stress_ratio(material.friction));
+      } catch (const std::invalid_argument& e) {
+        const bool wall_side = b.wall_friction < models::wall::chialvo_slip::critical_wall_friction;
+        diag.error(wall_side ? where("wall_friction") : where("solids_wall"),
+                   path + (wall_side ? ".wall_friction" : ".solids_wall"),
+                   std::string("dense-slip: ") + e.what() + (wall_side ? "" : " (solids.friction)"));
+      }
+    }
+    if (b.solids_wall == "johnson-jackson" && table->get("wall_restitution") &&
+        b.wall_restitution >= 1.0 && deck.solids.momentum) {
+      bool has_temperature = true;
+      try {
+        has_temperature = models::stress_registry()
+                              .create(deck.models.solids_stress.name,
+                                      deck.models.solids_stress.coefficients)
+                              ->defines_temperature();
+      } catch (const std::exception&) {
+        // An unknown closure is reported where it is named.
+      }
+      if (!has_temperature)
+        diag.error(where("wall_restitution"), path + ".wall_restitution",
+                   "expected < 1 with the closure \"" + deck.models.solids_stress.name +
+                       "\", which has no granular temperature: the wall temperature "
+                       "(2/3) φ' |u_slip|²/(1 − e_w²) needs e_w < 1");
+    }
+  }
+}
+
 void check_run(const toml::table& root, Deck& deck, Diagnostics& diag) {
   const auto& r = deck.run;
   if (!(r.dt_min <= r.dt_initial && r.dt_initial <= r.dt_max)) {
@@ -324,6 +398,7 @@ void read_all(const toml::table& root, Deck& deck, Diagnostics& diag) {
   check_boundaries(root, deck, diag);
   read_section(subtable(root, "gas", "gas", diag), gas_section(), "gas", deck.gas, diag);
   read_material_and_models(root, deck, diag);
+  check_solids_walls(root, deck, diag);
   deck.initial = read_array_of_tables(root, "initial", "initial", initial_section(), diag);
   read_section(subtable(root, "numerics", "numerics", diag), numerics_section(), "numerics",
                deck.numerics, diag);

@@ -7,6 +7,8 @@ const std::vector<std::string> boundary_types = {"no_slip_wall",     "free_slip_
                                                  "moving_wall",      "pressure_outflow",
                                                  "pressure_inflow",  "mass_inflow"};
 const std::vector<std::string> wall_types = {"no_slip_wall", "free_slip_wall"};
+const std::vector<std::string> solids_wall_conditions = {"no-slip", "free-slip", "johnson-jackson",
+                                                         "dense-slip"};
 }  // namespace
 
 bool Grid::is_periodic(int direction) const {
@@ -118,6 +120,20 @@ const Section<BoundaryRegion>& boundary_section() {
           .doc("mass_inflow: solids velocity."),
       key(&BoundaryRegion::solids_fraction, "solids_fraction").unit("-").init(0.0).within(0.0, 1.0)
           .doc("mass_inflow: solids volume fraction ε_s."),
+      key(&BoundaryRegion::solids_wall, "solids_wall").init("no-slip").one_of(solids_wall_conditions)
+          .doc("no_slip_wall / moving_wall: the solids' tangential wall condition (the gas keeps "
+               "`type`): no-slip, free-slip, johnson-jackson (specularity, wall_restitution) or "
+               "dense-slip (wall_friction; the report's App. C slip). free_slip_wall is free slip "
+               "for both phases."),
+      key(&BoundaryRegion::specularity, "specularity").unit("-").within(0.0, 1.0)
+          .doc("solids_wall = johnson-jackson: specularity coefficient φ' (0 free slip, 1 full "
+               "momentum transfer); required there."),
+      key(&BoundaryRegion::wall_restitution, "wall_restitution").unit("-").within(0.0, 1.0)
+          .doc("solids_wall = johnson-jackson: particle-wall restitution e_w; required there "
+               "(< 1 with a closure that has no granular temperature)."),
+      key(&BoundaryRegion::wall_friction, "wall_friction").unit("-").within(0.0, 10.0)
+          .doc("solids_wall = dense-slip: particle-wall friction coefficient μ_w, at least "
+               "μ_w* = 0.33 (the report's data); required there."),
   }};
   return s;
 }

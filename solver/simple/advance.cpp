@@ -16,6 +16,7 @@ StepResult FlowSolver::advance(run::FlowState& state, const run::FlowState& old,
   const bool trace = std::getenv("BAGNOLD_TRACE") != nullptr;
   const bool root = m_domain.layout.comm().is_root();
   for (int iteration = 1; iteration <= m_deck.numerics.max_outer_iterations; ++iteration) {
+    m_outer_iteration = iteration;
     // The multigrid hierarchy of the pressure correction is built once per step and reused by
     // the later outer iterations (the matrix changes only through d); it dominated the run time.
     if (m_pressure_system) m_pressure_system->reuse_preconditioner(iteration > 1);

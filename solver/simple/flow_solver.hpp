@@ -169,6 +169,11 @@ class FlowSolver {
   std::unique_ptr<models::DragLaw> m_drag;                  // null without moving phases to couple
   std::unique_ptr<models::SolidsStressModel> m_stress;      // null unless the solids move
   std::unique_ptr<SolidsWalls> m_solids_walls;              // null unless the solids move
+  // Partial-slip wall coefficients c_w per (component d, 6 × local + face), evaluated on the
+  // first outer iteration of a step and held for the rest of it: the slip laws switch steeply
+  // near yield (η ≈ η_s), and re-evaluating them every iteration made the iterations cycle.
+  std::array<std::vector<double>, 3> m_wall_coefficients;
+  int m_outer_iteration = 0;
   std::vector<double> m_beta;                      // β [kg/(m³ s)] per local cell
   std::array<std::vector<double>, 2> m_viscosity;  // ε_g μ_g and μ_s [Pa s] per local cell
   std::vector<double> m_pressure_derivative;       // dP_s/dε_s [Pa] per local cell

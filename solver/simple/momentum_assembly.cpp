@@ -90,9 +90,16 @@ void FlowSolver::assemble_momentum(Phase phase, int d, const run::FlowState& sta
         if (link.kind == LinkKind::wall) {
           // No slip: μ A/δ. A solids partial-slip wall: c_w A, c_w ≤ μ_s/δ (solids_wall.cpp).
           const double wall_distance = 0.5 * width(l, e);
-          diffusion = phase == solids && m_solids_walls && m_solids_walls->partial(link.region)
-                          ? solids_wall_coefficient(state, link, l, d, e, wall_distance) * area
-                          : 0.5 * (viscosity(l) + viscosity(n)) * area / wall_distance;
+          if (phase == solids && m_solids_walls && m_solids_walls->partial(link.region)) {
+            // Held from the step's first outer iteration (m_wall_coefficients).
+            auto& held = m_wall_coefficients[ud];
+            if (held.empty()) held.assign(6 * static_cast<std::size_t>(layout.local_count()), 0.0);
+            double& c_w = held[6 * static_cast<std::size_t>(l) + static_cast<std::size_t>(face)];
+            if (m_outer_iteration <= 1) c_w = solids_wall_coefficient(state, link, l, d, e, wall_distance);
+            diffusion = c_w * area;
+          } else {
+            diffusion = 0.5 * (viscosity(l) + viscosity(n)) * area / wall_distance;
+          }
         } else if (link.kind != LinkKind::zero_gradient) {
           // The edge between c, n and their neighbours m, m' across the face.
           const int m = link.local;

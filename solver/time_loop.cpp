@@ -15,7 +15,7 @@ std::vector<double> monitor_row(const TimeLoopContext& context, const FlowSolver
   std::vector<double> row = {dt, static_cast<double>(step.iterations), step.residuals.largest(),
                              inventory.gas, inventory.solids};
   const auto gas_flux = solver.boundary_mass_flux(state, Phase::gas);
-  const auto solids_flux = solver.boundary_mass_flux(state, Phase::solids);
+  const auto solids_flux = solver.stepped_solids_flux(state);
   for (std::size_t r = 0; r < gas_flux.size(); ++r) {
     row.push_back(gas_flux[r]);
     row.push_back(solids_flux[r]);

@@ -242,6 +242,10 @@ void FlowSolver::apply_boundary_values(run::FlowState& state) const {
   }
 }
 
+std::vector<double> FlowSolver::stepped_solids_flux(const run::FlowState& state) const {
+  return m_stepped_solids_flux.empty() ? boundary_mass_flux(state, solids) : m_stepped_solids_flux;
+}
+
 std::vector<double> FlowSolver::boundary_mass_flux(const run::FlowState& state, Phase phase) const {
   const auto& layout = m_domain.layout;
   std::vector<double> flux(m_domain.regions.regions.size(), 0.0);

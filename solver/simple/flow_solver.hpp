@@ -103,6 +103,11 @@ class FlowSolver {
 
   // Net mass flux [kg/s] of a phase out through each boundary region (monitor).
   std::vector<double> boundary_mass_flux(const run::FlowState& state, Phase phase) const;
+  // The solids mass flux per region [kg/s] through which the last converged step changed the
+  // inventory: the fluxes conserve_solids used (before it updated ε_s, which changes the upwind
+  // ε_s at an outlet), so the monitor's outflow balances the inventory to round-off. Falls back
+  // to boundary_mass_flux(state, solids) where the solids do not move.
+  std::vector<double> stepped_solids_flux(const run::FlowState& state) const;
 
   bool moves(Phase phase) const { return m_moves[phase]; }
 
@@ -174,6 +179,7 @@ class FlowSolver {
   // near yield (η ≈ η_s), and re-evaluating them every iteration made the iterations cycle.
   std::array<std::vector<double>, 3> m_wall_coefficients;
   int m_outer_iteration = 0;
+  std::vector<double> m_stepped_solids_flux;  // set by conserve_solids
   std::vector<double> m_beta;                      // β [kg/(m³ s)] per local cell
   std::array<std::vector<double>, 2> m_viscosity;  // ε_g μ_g and μ_s [Pa s] per local cell
   std::vector<double> m_pressure_derivative;       // dP_s/dε_s [Pa] per local cell

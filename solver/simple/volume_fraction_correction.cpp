@@ -174,6 +174,7 @@ void FlowSolver::conserve_solids(run::FlowState& state, const run::FlowState& ol
   const auto& layout = m_domain.layout;
   const auto& numbering = *m_pressure_numbering;
   const auto& u = state.solids_velocity;
+  m_stepped_solids_flux = boundary_mass_flux(state, solids);  // collective
   std::vector<double> conserved(numbering.owned_locals.size());
   for (std::size_t row = 0; row < numbering.owned_locals.size(); ++row) {
     const int l = numbering.owned_locals[row];

@@ -11,6 +11,8 @@ struct Material {
   double friction = 0.3;     // μ [-], interparticle friction coefficient
   double stiffness = 1e5;    // k [N/m], Hookean normal spring stiffness (rheology models)
   double bond_number = 0.0;  // Bo* [-], modified Bond number (cohesive rheology)
+
+  bool operator==(const Material&) const = default;
 };
 
 }  // namespace bagnold::models

@@ -19,12 +19,17 @@ last at least --window-min seconds and the run must end while the discharge is s
 """
 import glob
 import os
+import re
 import shlex
+import subprocess
 import sys
 
 import numpy as np
 
 BLOCK = 0.05  # s, block length for block means and the spread
+# `bagnold run`'s last line: steps, redone steps, outer iterations per step, wall seconds.
+RUN_SUMMARY = re.compile(r"after (\d+) steps \((\d+) redone\), ([\d.]+) outer iterations per step, "
+                         r"([\d.]+) s wall")
 
 
 class PostError(Exception):
@@ -187,6 +192,25 @@ def discharge(run_dir, region="orifice", window_min=0.2, tolerance=0.05, until=N
     window["all_regions_rate"] = float(np.mean(totals[window["first_block"]:]))
     window["regions"] = regions
     return dict(t=t, dt=dt, flux=flux, inventory=inventory, window=window, path=path)
+
+
+def solids_mass_balance(columns):
+    """|inventory(end) + ∫ outflow dt − inventory(0)| / inventory(0) from monitor columns (all
+    regions' solids fluxes; the first row is after the first step)."""
+    dt = columns["dt"]
+    outflow = sum(columns[n] for n in columns if n.startswith("flux_") and n.endswith("_solids_kg_per_s"))
+    inventory = columns["inventory_solids_kg"]
+    initial = inventory[0] + outflow[0] * dt[0]
+    return abs(inventory[-1] + float(np.sum(outflow * dt)) - initial) / initial
+
+
+def run_bagnold(bagnold, deck, ranks, sets):
+    """`mpirun -np RANKS BAGNOLD run DECK --set ...` (root allowed), output captured."""
+    command = ["mpirun", "--oversubscribe", "-np", str(ranks), bagnold, "run", deck]
+    for s in sets:
+        command += ["--set", s]
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    return subprocess.run(command, capture_output=True, text=True, env=env)
 
 
 def list_snapshots(run_dir):

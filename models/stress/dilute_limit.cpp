@@ -15,8 +15,10 @@ std::vector<CoefficientSpec> DiluteLimit::specs() {
 }
 
 DiluteLimit DiluteLimit::read(const Coefficients& c) {
-  return {.cutoff = real_coefficient(c, "dilute_cutoff"),
-          .ideal_gas = string_coefficient(c, "dilute_stress") == "ideal-gas"};
+  DiluteLimit limit;
+  limit.cutoff = real_coefficient(c, "dilute_cutoff");
+  limit.ideal_gas = string_coefficient(c, "dilute_stress") == "ideal-gas";
+  return limit;
 }
 
 }  // namespace bagnold::models

@@ -15,6 +15,7 @@
 //   kinetic              the formulas as printed, down to dilute_cutoff.
 // Below dilute_cutoff φ_min both give zero stress and T = 0.
 
+#include <optional>
 #include <vector>
 
 #include "models/coefficients.hpp"
@@ -25,6 +26,10 @@ namespace bagnold::models {
 struct DiluteLimit {
   double cutoff = 1e-6;    // φ_min [-]
   bool ideal_gas = true;   // dilute_stress = "ideal-gas"
+  // φ_d of the owning model for the last material it saw: the bisection costs ~60 point
+  // evaluations, and a run's material does not change between the solver's calls.
+  mutable std::optional<Material> minimum_for;
+  mutable double minimum = 0.0;
 
   static std::vector<CoefficientSpec> specs();
   static DiluteLimit read(const Coefficients& c);
@@ -46,10 +51,10 @@ double pressure_minimum_fraction(SlopeFunction&& pressure_slope, double lower, d
 
 // evaluate_cells with the dilute treatment above wrapped around the model's point function.
 // The P_s minimum is found on the point function itself (γ̇ = 1, tr D = 0; the kinetic
-// pressure scales as γ̇², so φ_d does not depend on the rate), once per call.
+// pressure scales as γ̇², so φ_d does not depend on the rate), once per material.
 template <class PointFunction>
-void evaluate_cells_dilute_limited(const DiluteLimit& dilute, const SolidsState& in,
-                                   SolidsStress& out, PointFunction&& point) {
+void evaluate_cells_dilute_limited(const DiluteLimit& dilute, const Material& material,
+                                   const SolidsState& in, SolidsStress& out, PointFunction&& point) {
   const auto limited = [&](double phi, double shear_rate, double divergence) {
     if (phi < dilute.cutoff) {
       PointStress zero;
@@ -62,9 +67,13 @@ void evaluate_cells_dilute_limited(const DiluteLimit& dilute, const SolidsState&
     evaluate_cells(in, out, limited);
     return;
   }
-  const double lowest = dilute.cutoff > 1e-4 ? dilute.cutoff : 1e-4;
-  const double minimum = pressure_minimum_fraction(
-      [&](double phi) { return limited(phi, 1.0, 0.0).pressure_derivative; }, lowest, 0.5);
+  if (dilute.minimum_for != material) {
+    const double lowest = dilute.cutoff > 1e-4 ? dilute.cutoff : 1e-4;
+    dilute.minimum = pressure_minimum_fraction(
+        [&](double phi) { return limited(phi, 1.0, 0.0).pressure_derivative; }, lowest, 0.5);
+    dilute.minimum_for = material;
+  }
+  const double minimum = dilute.minimum;
   evaluate_cells(in, out, [&](double phi, double shear_rate, double divergence) {
     if (phi >= minimum || phi < dilute.cutoff) return limited(phi, shear_rate, divergence);
     PointStress s = limited(minimum, shear_rate, divergence);

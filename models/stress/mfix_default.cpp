@@ -65,8 +65,8 @@ void MfixDefault::evaluate(const Material& material, const SolidsState& in,
   require_valid_material(material, name());
   const double packed_fraction = 1.0 - m_constants.packed_gas_fraction;
   const double sin_friction_angle = std::sin(m_constants.internal_friction_angle * pi / 180.0);
-  evaluate_cells_dilute_limited(m_dilute, in, out, [&](double phi, double shear_rate,
-                                                       double divergence) {
+  evaluate_cells_dilute_limited(m_dilute, material, in, out,
+                                [&](double phi, double shear_rate, double divergence) {
     PointStress p;
     p.granular_temperature = 0.0;
     if (phi > packed_fraction) {

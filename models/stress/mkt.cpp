@@ -91,7 +91,8 @@ void Mkt::evaluate(const Material& material, const SolidsState& in, SolidsStress
   const double d = material.diameter;
   const double critical = chialvo2012::critical_fraction(material.friction);
   const double yield_ratio = chialvo2012::yield_stress_ratio(material.friction);
-  evaluate_cells_dilute_limited(m_dilute, in, out, [&](double phi, double shear_rate, double) {
+  evaluate_cells_dilute_limited(m_dilute, material, in, out,
+                                [&](double phi, double shear_rate, double) {
     PointStress p;
     const auto s = steady_state(Dual::variable(phi), material, m_constants, m_dense);
     // Table I: p = ρ_s H T with T = M (γ̇d)².

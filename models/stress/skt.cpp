@@ -40,7 +40,8 @@ void Skt::evaluate(const Material& material, const SolidsState& in, SolidsStress
   const double d = material.diameter;
   const double critical = chialvo2012::critical_fraction(material.friction);
   const double yield_ratio = chialvo2012::yield_stress_ratio(material.friction);
-  evaluate_cells_dilute_limited(m_dilute, in, out, [&](double phi, double shear_rate, double) {
+  evaluate_cells_dilute_limited(m_dilute, material, in, out,
+                                [&](double phi, double shear_rate, double) {
     PointStress p;
     const auto s = kinetic_state(Dual::variable(phi), material, m_radial, m_dense);
     // Eq. 1 with T = (J/K)(γ̇d)²: p = ρ_s H (J/K)(γ̇d)², differentiated at fixed γ̇.

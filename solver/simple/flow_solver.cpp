@@ -87,6 +87,8 @@ FlowSolver::FlowSolver(const deck::Deck& deck, const parallel::Domain& domain)
                                                 deck.models.solids_stress.coefficients);
     m_solids_walls = std::make_unique<SolidsWalls>(deck, domain.regions.regions,
                                                    m_stress->defines_temperature());
+    if (m_solids_walls->any_partial())
+      for (auto& held : m_wall_coefficients) held.assign(6 * local, 0.0);
   }
   m_pressure_numbering = std::make_unique<UnknownNumbering>(
       layout, [&](int l) { return layout.kind(l) == grid::CellKind::fluid; });

@@ -92,9 +92,7 @@ void FlowSolver::assemble_momentum(Phase phase, int d, const run::FlowState& sta
           const double wall_distance = 0.5 * width(l, e);
           if (phase == solids && m_solids_walls && m_solids_walls->partial(link.region)) {
             // Held from the step's first outer iteration (m_wall_coefficients).
-            auto& held = m_wall_coefficients[ud];
-            if (held.empty()) held.assign(6 * static_cast<std::size_t>(layout.local_count()), 0.0);
-            double& c_w = held[6 * static_cast<std::size_t>(l) + static_cast<std::size_t>(face)];
+            double& c_w = m_wall_coefficients[ud][6 * static_cast<std::size_t>(l) + static_cast<std::size_t>(face)];
             if (m_outer_iteration <= 1) c_w = solids_wall_coefficient(state, link, l, d, e, wall_distance);
             diffusion = c_w * area;
           } else {

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "models/rdf/radial_distribution.hpp"
 #include "models/stress/friction_table.hpp"
 #include "models/wall/wall_coefficient.hpp"
 #include "solver/simple/flow_solver.hpp"
@@ -13,11 +14,10 @@
 namespace bagnold::solver {
 
 namespace {
-// Carnahan–Starling g0 (App. B Eq. 11) for Johnson–Jackson, capped 0.01 below the packing limit
-// so it stays finite in a compressed iterate.
-double carnahan_starling(double fraction, double packing_limit) {
-  const double phi = std::clamp(fraction, 0.0, std::max(packing_limit - 0.01, 0.0));
-  return (1.0 - 0.5 * phi) / std::pow(1.0 - phi, 3);
+// Carnahan–Starling g0 (App. B Eq. 11) for Johnson–Jackson, at φ capped 0.01 below the packing
+// limit so it stays finite in a compressed iterate.
+double capped_carnahan_starling(double fraction, double packing_limit) {
+  return models::rdf::carnahan_starling(std::clamp(fraction, 0.0, std::max(packing_limit - 0.01, 0.0)));
 }
 }  // namespace
 
@@ -59,7 +59,7 @@ double SolidsWalls::coefficient(int region, const NearWallSolids& near, double w
     case Kind::free_slip: return 0.0;
     case Kind::johnson_jackson: {
       const double phi = std::max(near.fraction, 0.0);
-      const double g0 = carnahan_starling(phi, law.johnson_jackson.max_packing);
+      const double g0 = capped_carnahan_starling(phi, law.johnson_jackson.max_packing);
       const double theta =
           m_has_temperature && std::isfinite(near.temperature)
               ? std::max(near.temperature, 0.0)

@@ -9,7 +9,8 @@
 //   johnson-jackson  c_JJ(φ, g0, Θ) (models/wall/johnson_jackson.hpp): Θ of the cell where the
 //                    closure defines one, else the wall temperature at which q_w = 0
 //   dense-slip       ρ_s d γ̇/F(η), the report's App. C slip (models/wall/dense_slip.hpp)
-// All from the current iterate: lagged, re-evaluated every outer iteration with μ_s.
+// Evaluated on the first outer iteration of a step and held for the rest of it (FlowSolver's
+// m_wall_coefficients).
 
 #include <memory>
 #include <optional>
@@ -43,6 +44,11 @@ class SolidsWalls {
   bool partial(int region) const {
     return region >= 0 && static_cast<std::size_t>(region) < m_laws.size() &&
            m_laws[static_cast<std::size_t>(region)].kind != Kind::no_slip;
+  }
+  bool any_partial() const {
+    for (const auto& law : m_laws)
+      if (law.kind != Kind::no_slip) return true;
+    return false;
   }
   // c_w [Pa s/m] for a face of region r at wall distance δ [m].
   double coefficient(int region, const NearWallSolids& near, double wall_distance) const;

@@ -29,7 +29,7 @@ Real smoothed_power(Real excess, double exponent, double smoothing);
 struct DenseLimit {
   double jamming_margin = 0.01;     // δ [-]
   double quasi_static_scale = 1.0;  // s [-]
-  double onset_smoothing = 1e-4;    // x_s [-]
+  double onset_smoothing = 1e-2;    // x_s [-]
 
   static std::vector<CoefficientSpec> specs();
   static DenseLimit read(const Coefficients& c);

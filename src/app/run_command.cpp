@@ -1,5 +1,6 @@
 // bagnold run DECK: set up the domain and the initial state, write it, and advance to
 // run.end_time with the two-fluid solver (gas alone, gas and solids, or solids in vacuum).
+#include <algorithm>
 #include <fmt/format.h>
 
 #include <chrono>
@@ -73,6 +74,9 @@ int run_command(const DeckArguments& args) {
         say(std::string("bagnold run: cannot restart: ") + e.what(), true);
         return bad_input;
       }
+      // The snapshot's next dt, kept within the deck's limits: a restart with a new dt_max or
+      // dt_min obeys them from its first step.
+      start.dt = std::clamp(start.dt, deck.run.dt_min, deck.run.dt_max);
       say(fmt::format("restart from {} at t = {:.6g} s, step {}", start.snapshot, start.time, start.step));
     }
     run::OutputWriter output(deck, domain);

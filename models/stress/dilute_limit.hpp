@@ -12,9 +12,11 @@
 //                        temperature of φ_d: a dilute gas at fixed T has P = ρ_s φ T, linear in
 //                        φ, and the kinematic viscosities μ_s/(ρ_s φ) stay those of φ_d. P_s is
 //                        then continuous and non-decreasing in φ; dP_s/dε_s = P_s(φ_d)/φ_d.
-//   kinetic              the formulas as printed, down to dilute_cutoff.
+//   kinetic              the formulas as printed, down to dilute_cutoff ("printed" for the
+//                        steady-shear rheology, whose printed P_s stays finite at φ = 0).
 // Below dilute_cutoff φ_min both give zero stress and T = 0.
 
+#include <cmath>
 #include <optional>
 #include <vector>
 
@@ -24,15 +26,21 @@
 namespace bagnold::models {
 
 struct DiluteLimit {
+  // Where the linear branch P_s = P_s(φ_d) φ/φ_d starts. pressure_minimum: the kinetic models,
+  // whose P_s(φ) falls towards φ = 0 below its minimum. tangent: models whose P_s stays finite
+  // at φ = 0 (the steady-shear rheology); φ_d is where P_s/φ is smallest, so the line through
+  // the origin is tangent to P_s there and dP_s/dε_s is continuous.
+  enum class Anchor { pressure_minimum, tangent };
   double cutoff = 1e-6;    // φ_min [-]
   bool ideal_gas = true;   // dilute_stress = "ideal-gas"
+  Anchor anchor = Anchor::pressure_minimum;
   // φ_d of the owning model for the last material it saw: the bisection costs ~60 point
   // evaluations, and a run's material does not change between the solver's calls.
   mutable std::optional<Material> minimum_for;
   mutable double minimum = 0.0;
 
-  static std::vector<CoefficientSpec> specs();
-  static DiluteLimit read(const Coefficients& c);
+  static std::vector<CoefficientSpec> specs(Anchor anchor = Anchor::pressure_minimum);
+  static DiluteLimit read(const Coefficients& c, Anchor anchor = Anchor::pressure_minimum);
 };
 
 // The fraction φ_d in [lower, upper] where pressure_slope(φ) (dP_s/dφ at a fixed shear rate)
@@ -55,10 +63,13 @@ double pressure_minimum_fraction(SlopeFunction&& pressure_slope, double lower, d
 template <class PointFunction>
 void evaluate_cells_dilute_limited(const DiluteLimit& dilute, const Material& material,
                                    const SolidsState& in, SolidsStress& out, PointFunction&& point) {
+  // An empty cell has T = 0 where the model defines a temperature, NaN where it has none.
+  const double sample_temperature = point(0.5, 1.0, 0.0).granular_temperature;
+  const double empty_temperature = std::isnan(sample_temperature) ? sample_temperature : 0.0;
   const auto limited = [&](double phi, double shear_rate, double divergence) {
     if (phi < dilute.cutoff) {
       PointStress zero;
-      zero.granular_temperature = 0.0;
+      zero.granular_temperature = empty_temperature;
       return zero;
     }
     return point(phi, shear_rate, divergence);
@@ -69,8 +80,15 @@ void evaluate_cells_dilute_limited(const DiluteLimit& dilute, const Material& ma
   }
   if (dilute.minimum_for != material) {
     const double lowest = dilute.cutoff > 1e-4 ? dilute.cutoff : 1e-4;
+    // The sign of dP_s/dφ, or for the tangent that of d(P_s/φ)/dφ times φ².
     dilute.minimum = pressure_minimum_fraction(
-        [&](double phi) { return limited(phi, 1.0, 0.0).pressure_derivative; }, lowest, 0.5);
+        [&](double phi) {
+          const PointStress s = limited(phi, 1.0, 0.0);
+          return dilute.anchor == DiluteLimit::Anchor::tangent
+                     ? s.pressure_derivative * phi - s.pressure
+                     : s.pressure_derivative;
+        },
+        lowest, 0.5);
     dilute.minimum_for = material;
   }
   const double minimum = dilute.minimum;

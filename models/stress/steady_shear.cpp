@@ -26,8 +26,9 @@ blended::Constants constants_at(double friction, const Constants& k) {
   return c;  // no cohesion: α_coh = α₃ = 0
 }
 
-SteadyShear::SteadyShear(const Constants& constants, const ViscosityLimits& limits)
-    : m_constants(constants), m_limits(limits) {}
+SteadyShear::SteadyShear(const Constants& constants, const DiluteLimit& dilute,
+                         const ViscosityLimits& limits)
+    : m_constants(constants), m_dilute(dilute), m_limits(limits) {}
 
 void SteadyShear::evaluate(const Material& material, const SolidsState& in,
                            SolidsStress& out) const {
@@ -35,9 +36,13 @@ void SteadyShear::evaluate(const Material& material, const SolidsState& in,
   Material non_cohesive = material;
   non_cohesive.bond_number = 0.0;  // App. A has no cohesion; Bo* belongs to the cohesive model
   const blended::Constants c = constants_at(material.friction, m_constants);
-  evaluate_cells(in, out, [&](double phi, double shear_rate, double /*divergence*/) {
-    return blended::point_stress(phi, shear_rate, non_cohesive, c, m_limits);
-  });
+  // App. A's P_s stays finite as φ → 0 (the inertial branch at φ = 0); the dilute limit makes it
+  // vanish linearly below the tangent point (dilute_limit.hpp, docs/models.md).
+  evaluate_cells_dilute_limited(m_dilute, material, in, out,
+                                [&](double phi, double shear_rate, double /*divergence*/) {
+                                  return blended::point_stress(phi, shear_rate, non_cohesive, c,
+                                                               m_limits);
+                                });
 }
 
 namespace {
@@ -63,9 +68,12 @@ Constants read_constants(const Coefficients& c) {
                      "x_s [-]: volume-fraction width over which |φ − φ_c|^{2/3} (App. A Eq. 8) is "
                      "smoothed so that dP_s/dε_s is finite at φ_c.")},
           blended::stress_ratio_specs("App. A Eq. 11", "App. A Eq. 12", "Table II"),
+          DiluteLimit::specs(DiluteLimit::Anchor::tangent),
           ViscosityLimits::specs()}),
      .make = [](const Coefficients& c) -> std::unique_ptr<SolidsStressModel> {
-       return std::make_unique<SteadyShear>(read_constants(c), ViscosityLimits::read(c));
+       return std::make_unique<SteadyShear>(
+           read_constants(c), DiluteLimit::read(c, DiluteLimit::Anchor::tangent),
+           ViscosityLimits::read(c));
      }});
 }  // namespace
 

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "models/stress/blended_rheology.hpp"
+#include "models/stress/dilute_limit.hpp"
 #include "models/stress/solids_stress.hpp"
 
 namespace bagnold::models::steady_shear {
@@ -29,13 +30,14 @@ blended::Constants constants_at(double friction, const Constants& constants);
 
 class SteadyShear final : public SolidsStressModel {
  public:
-  SteadyShear(const Constants& constants, const ViscosityLimits& limits);
+  SteadyShear(const Constants& constants, const DiluteLimit& dilute, const ViscosityLimits& limits);
   std::string name() const override { return "steady-shear"; }
   void evaluate(const Material& material, const SolidsState& in, SolidsStress& out) const override;
   bool defines_temperature() const override { return false; }
 
  private:
   Constants m_constants;
+  DiluteLimit m_dilute;
   ViscosityLimits m_limits;
 };
 

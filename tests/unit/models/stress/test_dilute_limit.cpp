@@ -1,7 +1,9 @@
 // The dilute treatment of the algebraic-temperature kinetic models (models/stress/dilute_limit.hpp):
 // with the default ideal-gas treatment P_s never falls as solids are added; below the pressure
 // minimum φ_d the stresses are those of φ_d scaled by φ/φ_d at φ_d's temperature; above it they
-// are the printed formulas; the printed formulas themselves fall as 1/φ.
+// are the printed formulas; the printed formulas themselves fall as 1/φ. The steady-shear
+// rheology, whose printed P_s stays finite at φ = 0, gets the same linear branch below the point
+// where the line through the origin touches P_s (the tangent anchor).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -93,6 +95,37 @@ TEST(DiluteLimit, BelowTheCutoffThereIsNoStress) {
     EXPECT_EQ(s.shear_viscosity, 0.0) << name;
     EXPECT_EQ(s.granular_temperature, 0.0) << name;
   }
+}
+
+TEST(DiluteLimit, SteadyShearPressureVanishesInAnEmptyCellAlongTheTangentThroughTheOrigin) {
+  Material m;
+  m.stiffness = 1e5;
+  const auto model = make_model("steady-shear");
+  const auto printed = make_model("steady-shear", {{"dilute_stress", std::string("printed")}});
+  // As printed, App. A's inertial branch leaves P_s(φ → 0) finite.
+  const double empty = probe(*printed, m, 1e-5, rate).pressure;
+  EXPECT_GT(empty, 0.5 * probe(*printed, m, 0.1, rate).pressure);
+  // The tangent point: where P_s/φ of the printed rheology is smallest.
+  const double tangent = models::pressure_minimum_fraction(
+      [&](double phi) {
+        const auto s = probe(*printed, m, phi, 1.0);
+        return s.pressure_derivative * phi - s.pressure;
+      },
+      1e-4, 0.5);
+  EXPECT_GT(tangent, 0.1);
+  EXPECT_LT(tangent, 0.3);
+  const auto at = probe(*printed, m, tangent, rate);
+  // Below it P_s = P_s(φ_d) φ/φ_d; its slope P_s(φ_d)/φ_d is the printed slope at φ_d (tangent),
+  // so dP_s/dε_s is continuous.
+  EXPECT_NEAR(at.pressure_derivative, at.pressure / tangent, 1e-6 * at.pressure_derivative);
+  for (const double phi : {1e-4, 0.01, 0.5 * tangent, 0.999 * tangent}) {
+    const auto s = probe(*model, m, phi, rate);
+    EXPECT_NEAR(s.pressure, at.pressure * phi / tangent, 1e-9 * at.pressure);
+    EXPECT_NEAR(s.shear_viscosity, at.shear_viscosity * phi / tangent, 1e-9 * at.shear_viscosity);
+    EXPECT_LT(s.pressure, probe(*printed, m, phi, rate).pressure);
+  }
+  for (const double phi : {1.001 * tangent, 0.4, 0.58})
+    EXPECT_EQ(probe(*model, m, phi, rate).pressure, probe(*printed, m, phi, rate).pressure);
 }
 
 }  // namespace bagnold::tests

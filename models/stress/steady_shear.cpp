@@ -64,9 +64,10 @@ Constants read_constants(const Coefficients& c) {
            real_spec("alpha_int", "-", 0.099, 0.0, 10.0,
                      "α_int [-]: intermediate pressure p d/k = α_int γ̂^{1/2}, App. A Eq. 9, "
                      "Table II."),
-           real_spec("onset_smoothing", "-", 1e-4, 0.0, 0.01,
+           real_spec("onset_smoothing", "-", 1e-2, 0.0, 0.1,
                      "x_s [-]: volume-fraction width over which |φ − φ_c|^{2/3} (App. A Eq. 8) is "
-                     "smoothed so that dP_s/dε_s is finite at φ_c.")},
+                     "smoothed (quadratic below x_s) so that dP_s/dε_s is finite at φ_c; 1e-4 "
+                     "makes a packed bed ~100x stiffer (docs/models.md).")},
           blended::stress_ratio_specs("App. A Eq. 11", "App. A Eq. 12", "Table II"),
           DiluteLimit::specs(DiluteLimit::Anchor::tangent),
           ViscosityLimits::specs()}),

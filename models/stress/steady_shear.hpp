@@ -22,7 +22,7 @@ struct Constants {
   double transition_shear_rate = 0.1;        // γ̂_0
   double soft_drop = 0.2;                    // α₂
   double soft_exponent = 1.0;                // β₂
-  double onset_smoothing = 1e-4;             // x_s
+  double onset_smoothing = 1e-2;             // x_s
 };
 
 // The blended constants at friction μ: App. A Tables I–II, ε = 2/3, χ = 2 (Eqs. 8–10).

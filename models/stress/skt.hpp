@@ -36,7 +36,9 @@ KineticState<Real> kinetic_state(Real phi, const Material& material, rdf::Kind r
 
 class Skt final : public SolidsStressModel {
  public:
-  Skt(rdf::Kind radial, const DenseLimit& dense, const DiluteLimit& dilute,
+  // frictional_yield: add the quasi-static yield stress η_s(μ) P_qs of the dense limit (off in
+  // the report's SKT, which "does not consider ... the role of frictional contact").
+  Skt(rdf::Kind radial, bool frictional_yield, const DenseLimit& dense, const DiluteLimit& dilute,
       const ViscosityLimits& limits);
   std::string name() const override { return "skt"; }
   void evaluate(const Material& material, const SolidsState& in, SolidsStress& out) const override;
@@ -44,6 +46,7 @@ class Skt final : public SolidsStressModel {
 
  private:
   rdf::Kind m_radial;
+  bool m_frictional_yield;
   DenseLimit m_dense;
   DiluteLimit m_dilute;
   ViscosityLimits m_limits;

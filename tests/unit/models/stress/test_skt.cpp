@@ -51,6 +51,23 @@ TEST(Skt, MktRadialDistributionSharesMktJammingPoint) {
   EXPECT_NEAR(slope, -1.5, 2e-3);  // J/K tends to a constant, H ~ g0; subleading terms < 2e-3
 }
 
+TEST(Skt, FrictionalYieldIsOffByDefaultAndAddsTheQuasiStaticYieldStressWhenOn) {
+  // Above the quasi-static onset, at rest: the report's SKT (default) has no shear stress there
+  // (√T = 0), with frictional_yield = on the regularized yield stress η_s P_qs gives the capped
+  // viscosity; in a sheared dilute state (no P_qs) the two agree.
+  Material m;
+  m.friction = 0.3;
+  const auto report = make_model("skt");
+  const auto frictional = make_model("skt", {{"frictional_yield", std::string("on")}});
+  const double packed = models::chialvo2012::critical_fraction(0.3) + 0.01;
+  EXPECT_EQ(probe(*report, m, packed, 0.0).shear_viscosity, 0.0);
+  EXPECT_DOUBLE_EQ(probe(*frictional, m, packed, 0.0).shear_viscosity, 1e5);
+  EXPECT_EQ(probe(*report, m, packed, 0.0).pressure, probe(*frictional, m, packed, 0.0).pressure);
+  EXPECT_GT(probe(*report, m, packed, 0.0).pressure, 0.0);
+  EXPECT_EQ(probe(*report, m, 0.3, 10.0).shear_viscosity,
+            probe(*frictional, m, 0.3, 10.0).shear_viscosity);
+}
+
 TEST(Skt, PressureDerivativeMatchesFiniteDifferences) {
   Material m;
   for (const std::string radial : {"carnahan-starling", "torquato", "mkt"}) {

@@ -14,7 +14,8 @@
 //                        then continuous and non-decreasing in φ; dP_s/dε_s = P_s(φ_d)/φ_d.
 //   kinetic              the formulas as printed, down to dilute_cutoff ("printed" for the
 //                        steady-shear rheology, whose printed P_s stays finite at φ = 0).
-// Below dilute_cutoff φ_min both give zero stress and T = 0.
+// Below dilute_cutoff φ_min both give zero stress and T = 0 (NaN for a model without T).
+// The steady-shear rheology uses the same treatment with the tangent anchor (below).
 
 #include <cmath>
 #include <optional>

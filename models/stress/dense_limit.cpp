@@ -16,14 +16,15 @@ Real smoothed_power(Real excess, double exponent, double smoothing) {
 }
 
 std::vector<CoefficientSpec> DenseLimit::specs() {
+  const DenseLimit defaults;
   return {
-      real_spec("jamming_margin", "-", 0.01, 1e-9, 0.1,
+      real_spec("jamming_margin", "-", defaults.jamming_margin, 1e-9, 0.1,
                 "δ [-]: g0 (and the dense temperature branch) are evaluated at "
                 "min(φ, φ_c(μ) − δ); the quasi-static pressure starts at φ_c − δ."),
-      real_spec("quasi_static_scale", "-", 1.0, 0.0, 1e3,
+      real_spec("quasi_static_scale", "-", defaults.quasi_static_scale, 0.0, 1e3,
                 "s [-]: multiplies α_QS(μ) (App. A Table II) in the quasi-static pressure "
                 "s α_QS (k/d) (φ − φ_c + δ)^{2/3} (App. A Eq. 8 form); 0 switches it off."),
-      real_spec("onset_smoothing", "-", 1e-2, 0.0, 0.1,
+      real_spec("onset_smoothing", "-", defaults.onset_smoothing, 0.0, 0.1,
                 "x_s [-]: volume-fraction width over which the 2/3 power of the quasi-static "
                 "pressure is smoothed (quadratic below x_s) so that dP_s/dε_s is finite at "
                 "onset; 1e-4 makes a packed bed ~100x stiffer and the time step ~5x shorter "

@@ -35,10 +35,12 @@ struct DiluteLimit {
   double cutoff = 1e-6;    // φ_min [-]
   bool ideal_gas = true;   // dilute_stress = "ideal-gas"
   Anchor anchor = Anchor::pressure_minimum;
-  // φ_d of the owning model for the last material it saw: the bisection costs ~60 point
-  // evaluations, and a run's material does not change between the solver's calls.
+  // What the owning model's point function gives for the last material it saw: φ_d (the
+  // bisection costs ~60 point evaluations) and T in an empty cell (0 where the model defines a
+  // temperature, NaN where it has none). A run's material does not change between calls.
   mutable std::optional<Material> minimum_for;
   mutable double minimum = 0.0;
+  mutable double empty_temperature = 0.0;
 
   static std::vector<CoefficientSpec> specs(Anchor anchor = Anchor::pressure_minimum);
   static DiluteLimit read(const Coefficients& c, Anchor anchor = Anchor::pressure_minimum);
@@ -59,27 +61,23 @@ double pressure_minimum_fraction(SlopeFunction&& pressure_slope, double lower, d
 }
 
 // evaluate_cells with the dilute treatment above wrapped around the model's point function.
-// The P_s minimum is found on the point function itself (γ̇ = 1, tr D = 0; the kinetic
-// pressure scales as γ̇², so φ_d does not depend on the rate), once per material.
+// φ_d is found on the point function itself at γ̇ = 1, tr D = 0, once per material: the kinetic
+// pressure scales as γ̇², so their φ_d does not depend on the rate; the steady-shear tangent
+// point does only outside the inertial regime.
 template <class PointFunction>
 void evaluate_cells_dilute_limited(const DiluteLimit& dilute, const Material& material,
                                    const SolidsState& in, SolidsStress& out, PointFunction&& point) {
-  // An empty cell has T = 0 where the model defines a temperature, NaN where it has none.
-  const double sample_temperature = point(0.5, 1.0, 0.0).granular_temperature;
-  const double empty_temperature = std::isnan(sample_temperature) ? sample_temperature : 0.0;
   const auto limited = [&](double phi, double shear_rate, double divergence) {
     if (phi < dilute.cutoff) {
       PointStress zero;
-      zero.granular_temperature = empty_temperature;
+      zero.granular_temperature = dilute.empty_temperature;
       return zero;
     }
     return point(phi, shear_rate, divergence);
   };
-  if (!dilute.ideal_gas) {
-    evaluate_cells(in, out, limited);
-    return;
-  }
   if (dilute.minimum_for != material) {
+    const double sample_temperature = point(0.5, 1.0, 0.0).granular_temperature;
+    dilute.empty_temperature = std::isnan(sample_temperature) ? sample_temperature : 0.0;
     const double lowest = dilute.cutoff > 1e-4 ? dilute.cutoff : 1e-4;
     // The sign of dP_s/dφ, or for the tangent that of d(P_s/φ)/dφ times φ².
     dilute.minimum = pressure_minimum_fraction(
@@ -91,6 +89,10 @@ void evaluate_cells_dilute_limited(const DiluteLimit& dilute, const Material& ma
         },
         lowest, 0.5);
     dilute.minimum_for = material;
+  }
+  if (!dilute.ideal_gas) {
+    evaluate_cells(in, out, limited);
+    return;
   }
   const double minimum = dilute.minimum;
   evaluate_cells(in, out, [&](double phi, double shear_rate, double divergence) {

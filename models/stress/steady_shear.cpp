@@ -58,13 +58,13 @@ Constants read_constants(const Coefficients& c) {
     {.name = "steady-shear",
      .summary = "Blended steady-shear rheology (Chialvo, Sun & Sundaresan 2012; App. A Eqs. 7–15)",
      .coefficients = concatenate(
-         {{real_spec("alpha_inert", "-", 0.021, 0.0, 10.0,
+         {{real_spec("alpha_inert", "-", Constants{}.inertial, 0.0, 10.0,
                      "α_inert [-]: inertial pressure p d/k = α_inert γ̂²/|φ − φ_c|², App. A Eq. 10, "
                      "Table II."),
-           real_spec("alpha_int", "-", 0.099, 0.0, 10.0,
+           real_spec("alpha_int", "-", Constants{}.intermediate, 0.0, 10.0,
                      "α_int [-]: intermediate pressure p d/k = α_int γ̂^{1/2}, App. A Eq. 9, "
                      "Table II."),
-           real_spec("onset_smoothing", "-", 1e-2, 0.0, 0.1,
+           real_spec("onset_smoothing", "-", Constants{}.onset_smoothing, 0.0, 0.1,
                      "x_s [-]: volume-fraction width over which |φ − φ_c|^{2/3} (App. A Eq. 8) is "
                      "smoothed (quadratic below x_s) so that dP_s/dε_s is finite at φ_c; 1e-4 "
                      "makes a packed bed ~100x stiffer (docs/models.md).")},

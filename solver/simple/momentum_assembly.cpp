@@ -92,8 +92,10 @@ void FlowSolver::assemble_momentum(Phase phase, int d, const run::FlowState& sta
           const double wall_distance = 0.5 * width(l, e);
           if (phase == solids && m_solids_walls && m_solids_walls->partial(link.region)) {
             // Held from the step's first outer iteration (m_wall_coefficients).
-            double& c_w = m_wall_coefficients[ud][6 * static_cast<std::size_t>(l) + static_cast<std::size_t>(face)];
-            if (m_outer_iteration <= 1) c_w = solids_wall_coefficient(state, link, l, d, e, wall_distance);
+            const std::size_t slot = 6 * static_cast<std::size_t>(l) + static_cast<std::size_t>(face);
+            double& c_w = m_wall_coefficients[ud][slot];
+            if (m_outer_iteration <= 1)
+              c_w = solids_wall_coefficient(state, link, l, d, e, wall_distance);
             diffusion = c_w * area;
           } else {
             diffusion = 0.5 * (viscosity(l) + viscosity(n)) * area / wall_distance;

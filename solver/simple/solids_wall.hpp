@@ -12,6 +12,7 @@
 // Evaluated on the first outer iteration of a step and held for the rest of it (FlowSolver's
 // m_wall_coefficients).
 
+#include <algorithm>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -43,13 +44,9 @@ class SolidsWalls {
   // Whether region r (-1: none) has a solids law other than no-slip.
   bool partial(int region) const {
     return region >= 0 && static_cast<std::size_t>(region) < m_laws.size() &&
-           m_laws[static_cast<std::size_t>(region)].kind != Kind::no_slip;
+           slips(m_laws[static_cast<std::size_t>(region)]);
   }
-  bool any_partial() const {
-    for (const auto& law : m_laws)
-      if (law.kind != Kind::no_slip) return true;
-    return false;
-  }
+  bool any_partial() const { return std::ranges::any_of(m_laws, slips); }
   // c_w [Pa s/m] for a face of region r at wall distance δ [m].
   double coefficient(int region, const NearWallSolids& near, double wall_distance) const;
 
@@ -60,6 +57,7 @@ class SolidsWalls {
     models::wall::JohnsonJacksonWall johnson_jackson{0.0, 0.0, 1.0};
     std::optional<models::wall::DenseSlip> dense;
   };
+  static bool slips(const Law& law) { return law.kind != Kind::no_slip; }
   models::Material m_material;
   bool m_has_temperature;
   std::vector<Law> m_laws;

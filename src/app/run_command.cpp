@@ -1,8 +1,8 @@
 // bagnold run DECK: set up the domain and the initial state, write it, and advance to
 // run.end_time with the two-fluid solver (gas alone, gas and solids, or solids in vacuum).
-#include <algorithm>
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 

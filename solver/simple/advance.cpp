@@ -1,6 +1,7 @@
 // One implicit-Euler time step: outer iterations (closures, momentum predictors, pressure
 // correction, solids volume fraction correction) until every normalized residual is below
 // numerics.tolerance, or numerics.max_outer_iterations.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -15,12 +16,15 @@ StepResult FlowSolver::advance(run::FlowState& state, const run::FlowState& old,
   // BAGNOLD_TRACE=1: every outer iteration's residuals and the cell of the largest, on stderr.
   const bool trace = std::getenv("BAGNOLD_TRACE") != nullptr;
   const bool root = m_domain.layout.comm().is_root();
+  // The residuals' velocity scale may follow the iterate up to 10× the step's start, no further:
+  // an iterate that blows up must not make its own residuals look small and be accepted.
+  const double largest_scale = 10.0 * residual_velocity_scale(old);
   for (int iteration = 1; iteration <= m_deck.numerics.max_outer_iterations; ++iteration) {
     m_outer_iteration = iteration;
     // The multigrid hierarchy of the pressure correction is built once per step and reused by
     // the later outer iterations (the matrix changes only through d); it dominated the run time.
     if (m_pressure_system) m_pressure_system->reuse_preconditioner(iteration > 1);
-    m_velocity_scale = residual_velocity_scale(state);
+    m_velocity_scale = std::min(residual_velocity_scale(state), largest_scale);
     evaluate_drag(state);
     evaluate_solids_stress(state);
     result.residuals = Residuals{};

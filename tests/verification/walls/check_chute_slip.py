@@ -12,12 +12,13 @@ area (rho_s g cos(theta) x inventory: 3 x 384 Pa). Reverting the slip start (bac
 no-slip profile) fails on the speed within 1 s, or stalls.
 """
 import argparse
-import glob
 import os
 import sys
 
-import h5py
 import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "two_fluid"))
+from snapshots import Snapshot, snapshot_paths  # noqa: E402
 
 WEIGHT = 2500.0 * 8.961980 * 0.570771 * 0.03  # ρ_s g cos θ φ̄ H [Pa], chute-1d's column
 
@@ -28,15 +29,11 @@ def main():
     parser.add_argument("--end-time", type=float, required=True)
     parser.add_argument("--min-speed", type=float, required=True)
     args = parser.parse_args()
-    snapshots = sorted(glob.glob(os.path.join(args.run_dir, "snapshot_*.h5")))
-    if not snapshots:
-        print(f"no snapshots in {args.run_dir}")
-        return 1
-    with h5py.File(snapshots[-1], "r") as f:
-        t = float(f.attrs["time"])
-        phi = f["fields/solids_fraction"][:]
-        vx, vy, vz = (f[f"fields/solids_velocity_{c}"][:] for c in "xyz")
-        p = f["fields/solids_pressure"][:]
+    last = Snapshot(snapshot_paths(args.run_dir)[-1])
+    t = last.time
+    phi, vx, vy, vz = (last[name] for name in ("solids_fraction", "solids_velocity_x",
+                                               "solids_velocity_y", "solids_velocity_z"))
+    p = last["solids_pressure"]
     mean = float(np.sum(phi * vx) / np.sum(phi))
     cross = float(max(np.max(np.abs(vy)), np.max(np.abs(vz))))
     largest_p = float(np.max(p))

@@ -12,11 +12,6 @@
 //                        temperature of φ_d: a dilute gas at fixed T has P = ρ_s φ T, linear in
 //                        φ, and the kinematic viscosities μ_s/(ρ_s φ) stay those of φ_d. P_s is
 //                        then continuous and non-decreasing in φ; dP_s/dε_s = P_s(φ_d)/φ_d.
-//   cooling              as ideal-gas, but T fades too: below φ_d, T = T(φ_d) φ/φ_d and every
-//                        stress is the one at φ_d scaled by (φ/φ_d)². The stress force per unit
-//                        solids mass, ~P_s/(ρ_s φ Δx), then vanishes as φ → 0, where ideal-gas
-//                        keeps it at its φ_d value: a near-empty cell's T, set by its own shear,
-//                        no longer drives its few particles (docs/models.md, "Dilute limit").
 //   kinetic              the formulas as printed, down to dilute_cutoff ("printed" for the
 //                        steady-shear rheology, whose printed P_s stays finite at φ = 0).
 // Below dilute_cutoff φ_min both give zero stress and T = 0 (NaN for a model without T).
@@ -37,9 +32,8 @@ struct DiluteLimit {
   // at φ = 0 (the steady-shear rheology); φ_d is where P_s/φ is smallest, so the line through
   // the origin is tangent to P_s there and dP_s/dε_s is continuous.
   enum class Anchor { pressure_minimum, tangent };
-  enum class Treatment { printed, ideal_gas, cooling };
-  double cutoff = 1e-6;                         // φ_min [-]
-  Treatment treatment = Treatment::ideal_gas;   // dilute_stress
+  double cutoff = 1e-6;    // φ_min [-]
+  bool ideal_gas = true;   // dilute_stress = "ideal-gas"
   Anchor anchor = Anchor::pressure_minimum;
   // What the owning model's point function gives for the last material it saw: φ_d (the
   // bisection costs ~60 point evaluations) and T in an empty cell (0 where the model defines a
@@ -96,23 +90,19 @@ void evaluate_cells_dilute_limited(const DiluteLimit& dilute, const Material& ma
         lowest, 0.5);
     dilute.minimum_for = material;
   }
-  if (dilute.treatment == DiluteLimit::Treatment::printed) {
+  if (!dilute.ideal_gas) {
     evaluate_cells(in, out, limited);
     return;
   }
   const double minimum = dilute.minimum;
-  const bool cooling = dilute.treatment == DiluteLimit::Treatment::cooling;
   evaluate_cells(in, out, [&](double phi, double shear_rate, double divergence) {
     if (phi >= minimum || phi < dilute.cutoff) return limited(phi, shear_rate, divergence);
     PointStress s = limited(minimum, shear_rate, divergence);
-    const double ratio = phi / minimum;
-    // ideal-gas: P_s = P_s(φ_d) φ/φ_d. cooling: P_s = P_s(φ_d) (φ/φ_d)², T = T(φ_d) φ/φ_d.
-    const double scale = cooling ? ratio * ratio : ratio;
-    s.pressure_derivative = (cooling ? 2.0 * ratio : 1.0) * s.pressure / minimum;
+    const double scale = phi / minimum;
+    s.pressure_derivative = s.pressure / minimum;
     s.pressure *= scale;
     s.shear_viscosity *= scale;
     s.bulk_viscosity *= scale;
-    if (cooling) s.granular_temperature *= ratio;
     return s;
   });
 }

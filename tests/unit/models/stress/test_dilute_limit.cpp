@@ -87,40 +87,6 @@ TEST(DiluteLimit, BelowTheMinimumStressesScaleWithFractionAtTheMinimumsTemperatu
   }
 }
 
-TEST(DiluteLimit, CoolingFadesTheTemperatureSoTheStressForcePerMassVanishes) {
-  // dilute_stress = cooling: T = T(φ_d) φ/φ_d and stresses (φ/φ_d)² below φ_d, so P_s/φ (the
-  // stress force per unit solids mass) goes to zero with φ; P_s still never falls as solids are
-  // added; above φ_d the printed formulas, bit for bit.
-  Material m;
-  const models::Coefficients cooling{{"dilute_stress", std::string("cooling")}};
-  for (const char* name : kinetic_models) {
-    const auto model = make_model(name, cooling);
-    const auto printed = make_model(name, as_printed);
-    const double minimum = pressure_minimum(*printed, m);
-    const auto at = probe(*printed, m, minimum, rate);
-    for (const double phi : {1e-4, 0.01, 0.5 * minimum, 0.999 * minimum}) {
-      const auto s = probe(*model, m, phi, rate);
-      const double ratio = phi / minimum;
-      EXPECT_NEAR(s.pressure, at.pressure * ratio * ratio, 1e-9 * at.pressure) << name;
-      EXPECT_NEAR(s.pressure_derivative, 2.0 * ratio * at.pressure / minimum,
-                  1e-9 * at.pressure / minimum);
-      EXPECT_NEAR(s.shear_viscosity, at.shear_viscosity * ratio * ratio, 1e-9 * at.shear_viscosity);
-      EXPECT_NEAR(s.granular_temperature, at.granular_temperature * ratio,
-                  1e-9 * at.granular_temperature);
-    }
-    EXPECT_LT(probe(*model, m, 1e-4, rate).pressure / 1e-4,
-              1e-3 * probe(*model, m, minimum, rate).pressure / minimum) << name;
-    double previous = 0.0;
-    for (double phi = 1e-5; phi < 0.55; phi += 1e-3) {
-      const auto s = probe(*model, m, phi, rate);
-      EXPECT_GE(s.pressure, previous * (1.0 - 1e-12)) << name << " φ = " << phi;
-      previous = s.pressure;
-    }
-    for (const double phi : {1.001 * minimum, 0.3, 0.5})
-      EXPECT_EQ(probe(*model, m, phi, rate).pressure, probe(*printed, m, phi, rate).pressure);
-  }
-}
-
 TEST(DiluteLimit, BelowTheCutoffThereIsNoStress) {
   Material m;
   for (const char* name : kinetic_models) {

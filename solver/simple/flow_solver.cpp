@@ -25,7 +25,8 @@ FlowSolver::FlowSolver(const deck::Deck& deck, const parallel::Domain& domain)
     : m_deck(deck),
       m_domain(domain),
       m_limiter(limiter_from_name(deck.numerics.convection)),
-      m_simplec(deck.numerics.algorithm == "simplec") {
+      m_simplec(deck.numerics.algorithm == "simplec"),
+      m_residual_normalization(residual_normalization_from_name(deck.numerics.residual_normalization)) {
   const auto& layout = domain.layout;
   const auto local = static_cast<std::size_t>(layout.local_count());
   m_moves[gas] = deck.gas.enabled;

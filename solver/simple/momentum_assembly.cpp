@@ -161,6 +161,7 @@ void FlowSolver::assemble_momentum(Phase phase, int d, const run::FlowState& sta
     if (phase == gas && !m_source[ud].empty()) row.b += m_source[ud][uc] * row.volume;
     const double a_transient = row.fraction * rho * row.volume / dt;
     row.a += a_transient;
+    row.transient = a_transient;
     row.b += a_transient * u_old[uc];
   }
 }

@@ -109,7 +109,7 @@ struct Numerics {
   std::string algorithm = "simplec";     // simplec | simple
   std::string convection = "superbee";   // upwind | superbee | muscl | van_leer | minmod
   double tolerance = 1e-4;               // normalized residual for convergence of a step
-  std::string residual_normalization = "deviation";  // deviation | velocity-scale
+  std::string residual_normalization = "velocity-scale";  // velocity-scale | deviation
   int max_outer_iterations = 40;         // before the step is redone with dt / 2
   int easy_outer_iterations = 8;         // at or below: the next step grows
   double dt_growth = 1.2;                // factor after an easy step

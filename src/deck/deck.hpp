@@ -114,6 +114,7 @@ struct Numerics {
   int easy_outer_iterations = 8;         // at or below: the next step grows
   double dt_growth = 1.2;                // factor after an easy step
   double relax_velocity = 0.7;           // α_u
+  bool wall_shear_in_strain_rate = false;  // no-slip walls' shear in the wall cells' γ̇
   double relax_pressure = 1.0;           // α_p (SIMPLE needs about 0.3)
   std::string pressure_preconditioner = "hypre";  // hypre | gamg
   double pressure_tolerance = 1e-4;      // relative, per outer iteration

@@ -232,6 +232,10 @@ const Section<Numerics>& numerics_section() {
           .doc("Factor by which dt grows after an easy step (up to run.dt_max)."),
       key(&Numerics::relax_velocity, "relax_velocity").unit("-").init(0.7).within(0.05, 1.0)
           .doc("Under-relaxation of the momentum equations, α_u."),
+      key(&Numerics::wall_shear_in_strain_rate, "wall_shear_in_strain_rate").init(false)
+          .doc("Whether a stationary no-slip solids wall's shear enters the closure's strain rate "
+               "in the cells beside it (ghost value −u_c, as MFIX), instead of one-sided interior "
+               "differences."),
       key(&Numerics::relax_pressure, "relax_pressure").unit("-").init(1.0).within(0.01, 1.0)
           .doc("Under-relaxation of the pressure correction, α_p."),
       key(&Numerics::pressure_preconditioner, "pressure_preconditioner").init("hypre")

@@ -26,7 +26,8 @@ FlowSolver::FlowSolver(const deck::Deck& deck, const parallel::Domain& domain)
       m_domain(domain),
       m_limiter(limiter_from_name(deck.numerics.convection)),
       m_simplec(deck.numerics.algorithm == "simplec"),
-      m_residual_normalization(residual_normalization_from_name(deck.numerics.residual_normalization)) {
+      m_residual_normalization(residual_normalization_from_name(deck.numerics.residual_normalization)),
+      m_bulk_viscosity_ratio(deck.numerics.solids_bulk_viscosity_ratio) {
   const auto& layout = domain.layout;
   const auto local = static_cast<std::size_t>(layout.local_count());
   m_moves[gas] = deck.gas.enabled;

@@ -162,6 +162,7 @@ class FlowSolver {
   Limiter m_limiter;
   bool m_simplec;
   ResidualNormalization m_residual_normalization;
+  double m_bulk_viscosity_ratio;  // numerics.solids_bulk_viscosity_ratio: λ_s = r μ_s
   std::vector<double> m_width;  // 3 per local cell
   std::array<std::unique_ptr<UnknownNumbering>, 3> m_velocity_numbering;
   std::array<std::array<std::unique_ptr<LinearSystem>, 3>, 2> m_momentum_system;  // [phase][d]

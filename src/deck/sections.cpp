@@ -236,6 +236,11 @@ const Section<Numerics>& numerics_section() {
           .doc("Whether a stationary no-slip solids wall's shear enters the closure's strain rate "
                "in the cells beside it (ghost value −u_c, as MFIX), instead of one-sided interior "
                "differences."),
+      key(&Numerics::solids_bulk_viscosity_ratio, "solids_bulk_viscosity_ratio").unit("-").init(0.0)
+          .within(0.0, 100.0)
+          .doc("r: the solids stress gains a bulk viscosity λ_s = r μ_s (σ = P_s I − 2 μ_s S − "
+               "λ_s ∇·u I), which dissipates the work a rate-dependent P_s does on expansion. 0: "
+               "none (the closures' own λ_s is not used)."),
       key(&Numerics::relax_pressure, "relax_pressure").unit("-").init(1.0).within(0.01, 1.0)
           .doc("Under-relaxation of the pressure correction, α_p."),
       key(&Numerics::pressure_preconditioner, "pressure_preconditioner").init("hypre")

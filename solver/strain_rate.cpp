@@ -18,7 +18,8 @@ double centred(const parallel::Layout& layout, const std::vector<double>& face_v
 
 void compute_strain_rate(const parallel::Domain& domain,
                          const std::array<std::vector<double>, 3>& velocity,
-                         std::vector<double>& strain_rate, std::vector<double>& divergence) {
+                         std::vector<double>& strain_rate, std::vector<double>& divergence,
+                         const std::vector<bool>& no_slip_regions) {
   const auto& layout = domain.layout;
   const auto& g = domain.grid;
   const auto local = static_cast<std::size_t>(layout.local_count());
@@ -31,6 +32,34 @@ void compute_strain_rate(const parallel::Domain& domain,
       const int minus = layout.neighbour(l, 2 * b), plus = layout.neighbour(l, 2 * b + 1);
       const bool has_minus = minus >= 0 && layout.kind(minus) == CellKind::fluid;
       const bool has_plus = plus >= 0 && layout.kind(plus) == CellKind::fluid;
+      // A stationary no-slip wall beside the cell: its ghost value −u_c (the wall's zero half a
+      // cell away), so the wall shear enters γ̇ as MFIX's ghost cells put it there.
+      auto at_wall = [&](int neighbour) {
+        return !no_slip_regions.empty() && neighbour >= 0 && layout.kind(neighbour) == CellKind::boundary &&
+               layout.region(neighbour) >= 0 &&
+               no_slip_regions[static_cast<std::size_t>(layout.region(neighbour))];
+      };
+      const bool wall_minus = !has_minus && at_wall(minus), wall_plus = !has_plus && at_wall(plus);
+      if (wall_minus || wall_plus) {
+        const auto& axis = g.axis(b);
+        const double width = axis.width(ijk[static_cast<std::size_t>(b)]);
+        // Distance from the centre to the value used on one side: a ghost a width away, a fluid
+        // neighbour's centre, or the cell's own value.
+        auto side = [&](bool fluid, bool wall, int neighbour) {
+          return wall ? width
+                 : fluid ? 0.5 * (width + axis.width(layout.index3(neighbour)[static_cast<std::size_t>(b)]))
+                         : 0.0;
+        };
+        for (int a = 0; a < 3; ++a) {
+          if (a == b) continue;
+          const auto& u = velocity[static_cast<std::size_t>(a)];
+          const double own = centred(layout, u, l, a);
+          const double lower = wall_minus ? -own : has_minus ? centred(layout, u, minus, a) : own;
+          const double upper = wall_plus ? -own : has_plus ? centred(layout, u, plus, a) : own;
+          gradient[a][b] = (upper - lower) / (side(has_minus, wall_minus, minus) + side(has_plus, wall_plus, plus));
+        }
+        continue;
+      }
       if (!has_minus && !has_plus) continue;
       const int lo = has_minus ? minus : l, hi = has_plus ? plus : l;
       // Distance between the centres used (periodic wrap: neighbours are a width away).

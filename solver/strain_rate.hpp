@@ -3,7 +3,9 @@
 // face velocities (issue 4, step 1 of the outer iteration):
 //   cell-centred velocity  u_c = ½ (U_east + U_west) (likewise v, w), exact for linear fields;
 //   ∇u by central differences of the cell-centred velocities between the two face neighbours,
-//   one-sided where a neighbour is not fluid, zero where neither is;
+//   one-sided where a neighbour is not fluid, zero where neither is; where it is a boundary cell
+//   of a region flagged in no_slip_regions (a stationary no-slip solids wall; empty: none), the
+//   tangential components take the ghost value −u_c there, so the wall shear enters γ̇;
 //   D = ½ (∇u + ∇uᵀ),  γ̇ = sqrt(2 D:D) (model-notes.md: simple shear u_x = γ̇ z gives γ̇),
 //   tr D = ∂u/∂x + ∂v/∂y + ∂w/∂z (from the face velocities directly: exact discrete divergence).
 // Computed for owned fluid cells; the halo is exchanged; other cells get zero.
@@ -17,6 +19,7 @@ namespace bagnold::solver {
 
 void compute_strain_rate(const parallel::Domain& domain,
                          const std::array<std::vector<double>, 3>& velocity,
-                         std::vector<double>& strain_rate, std::vector<double>& divergence);
+                         std::vector<double>& strain_rate, std::vector<double>& divergence,
+                         const std::vector<bool>& no_slip_regions = {});
 
 }  // namespace bagnold::solver

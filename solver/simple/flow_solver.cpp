@@ -25,7 +25,9 @@ FlowSolver::FlowSolver(const deck::Deck& deck, const parallel::Domain& domain)
     : m_deck(deck),
       m_domain(domain),
       m_limiter(limiter_from_name(deck.numerics.convection)),
-      m_simplec(deck.numerics.algorithm == "simplec") {
+      m_simplec(deck.numerics.algorithm == "simplec"),
+      m_residual_normalization(residual_normalization_from_name(deck.numerics.residual_normalization)),
+      m_bulk_viscosity_ratio(deck.numerics.solids_bulk_viscosity_ratio) {
   const auto& layout = domain.layout;
   const auto local = static_cast<std::size_t>(layout.local_count());
   m_moves[gas] = deck.gas.enabled;
@@ -89,6 +91,12 @@ FlowSolver::FlowSolver(const deck::Deck& deck, const parallel::Domain& domain)
                                                    m_stress->defines_temperature());
     if (m_solids_walls->any_partial())
       for (auto& held : m_wall_coefficients) held.assign(6 * local, 0.0);
+    if (deck.numerics.wall_shear_in_strain_rate) {
+      const auto& regions = domain.regions;
+      for (std::size_t r = 0; r < regions.regions.size(); ++r)
+        m_no_slip_strain_regions.push_back(regions.types[r] == grid::BoundaryType::no_slip_wall &&
+                                           !m_solids_walls->partial(static_cast<int>(r)));
+    }
   }
   m_pressure_numbering = std::make_unique<UnknownNumbering>(
       layout, [&](int l) { return layout.kind(l) == grid::CellKind::fluid; });

@@ -29,6 +29,7 @@
 #include "models/stress/solids_stress.hpp"
 #include "solver/convection_limiter.hpp"
 #include "solver/petsc/linear_system.hpp"
+#include "solver/simple/momentum_residual.hpp"
 #include "solver/simple/solids_wall.hpp"
 #include "solver/unknown_numbering.hpp"
 #include "solver/velocity_faces.hpp"
@@ -73,6 +74,7 @@ struct MomentumRow {
   double b = 0.0;              // sources: pressure, gravity, transient, TVD correction
   double neighbours_a = 0.0;   // Σ a_nb
   double neighbours_u = 0.0;   // Σ a_nb u_nb at the current iterate
+  double transient = 0.0;      // ε ρ V/dt, the part of a from the time derivative
   double fraction = 0.0;       // ε of the phase at the face velocity
   double area = 0.0;           // face area normal to the velocity
   double volume = 0.0;         // control volume of the face velocity
@@ -159,6 +161,8 @@ class FlowSolver {
   std::array<bool, 2> m_moves{false, false};  // whether each phase's momentum is solved
   Limiter m_limiter;
   bool m_simplec;
+  ResidualNormalization m_residual_normalization;
+  double m_bulk_viscosity_ratio;  // numerics.solids_bulk_viscosity_ratio: λ_s = r μ_s
   std::vector<double> m_width;  // 3 per local cell
   std::array<std::unique_ptr<UnknownNumbering>, 3> m_velocity_numbering;
   std::array<std::array<std::unique_ptr<LinearSystem>, 3>, 2> m_momentum_system;  // [phase][d]
@@ -184,6 +188,7 @@ class FlowSolver {
   std::array<std::vector<double>, 2> m_viscosity;  // ε_g μ_g and μ_s [Pa s] per local cell
   std::vector<double> m_pressure_derivative;       // dP_s/dε_s [Pa] per local cell
   std::vector<double> m_strain_rate, m_divergence; // scratch for the closure
+  std::vector<bool> m_no_slip_strain_regions;      // per region: its wall shear enters γ̇
   double m_reference_speed = 1.0;  // [m/s]
   double m_velocity_scale = 1.0;   // residual_velocity_scale of the iterate, at most 10× the step start's
   double m_reference_area = 0.0;   // Σ_cells ½ Σ_faces A [m²]

@@ -14,7 +14,8 @@
 //       form: the continuity imbalance is subtracted, so a_P = Σ a_nb + transient and the
 //       rows stay diagonally dominant while ε_m is still changing within the step);
 //   b −= F (φ_f^TVD − φ_upwind)               (TVD by deferred correction).
-// Sources: ε_m (P_c − P_n) A; for the solids also (P_s,c − P_s,n) A (P_s = 0 beyond an outlet);
+// Sources: ε_m (P_c − P_n) A; for the solids also (P_s,c − P_s,n) A (P_s = 0 beyond an outlet)
+// and, with numerics.solids_bulk_viscosity_ratio r > 0, (λ_n ∇·u_n − λ_c ∇·u_c) A, λ = r μ_s;
 // ε_m ρ_m g_d V; the implicit-Euler term ε_m ρ_m V / dt (u_P − u_P^old); the gas's optional
 // manufactured source.
 #include <algorithm>
@@ -157,10 +158,21 @@ void FlowSolver::assemble_momentum(Phase phase, int d, const run::FlowState& sta
       row.b += row.fraction * (state.gas_pressure[uc] - state.gas_pressure[un]) * row.area;
     // P_s = 0 in a pressure-boundary cell: the solids leaving through an outlet are free of stress.
     if (phase == solids) row.b += (state.solids_pressure[uc] - state.solids_pressure[un]) * row.area;
+    // The optional bulk viscosity λ_s = r μ_s: σ gains −λ_s ∇·u I, lagged like P_s (zero beyond
+    // a fluid cell, as the wall-normal velocity and an outlet's P_s are).
+    if (phase == solids && m_bulk_viscosity_ratio > 0.0) {
+      auto bulk_stress = [&](int local) {
+        const auto u_local = static_cast<std::size_t>(local);
+        return layout.kind(local) == grid::CellKind::fluid
+                   ? m_bulk_viscosity_ratio * mu[u_local] * m_divergence[u_local] : 0.0;
+      };
+      row.b += (bulk_stress(n) - bulk_stress(l)) * row.area;
+    }
     row.b += row.fraction * rho * m_deck.physics.gravity[ud] * row.volume;
     if (phase == gas && !m_source[ud].empty()) row.b += m_source[ud][uc] * row.volume;
     const double a_transient = row.fraction * rho * row.volume / dt;
     row.a += a_transient;
+    row.transient = a_transient;
     row.b += a_transient * u_old[uc];
   }
 }

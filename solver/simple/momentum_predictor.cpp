@@ -15,7 +15,8 @@
 // diagonals D_m (SIMPLEC: D_m − Σ a_nb):
 //   [D_g, −βV; −βV, D_s] (u'_g, u'_s) = (ε_g A, ε_s A) (p'_c − p'_n)  →  d_g, d_s,
 //   [D_g, −βV; −βV, D_s] (u'_g, u'_s) = (0, K A) (ε'_c − ε'_n)       →  e (solids), K = dP_s/dε_s.
-// Residuals: Σ|R_m + βV u_other − A_m u_m| / Σ A_m U per phase (U: the residual velocity scale).
+// Residuals: Σ|R_m + βV u_other − A_m u_m| per phase, normalized as numerics.residual_normalization
+// says (momentum_residual.hpp).
 #include <algorithm>
 #include <cmath>
 
@@ -45,7 +46,20 @@ void FlowSolver::predict_momentum(int d, run::FlowState& state, const run::FlowS
   for (const Phase phase : {gas, solids})
     if (m_moves[phase]) assemble_momentum(phase, d, state, old, dt, rows[phase]);
 
-  std::array<double, 2> residual_sum{0, 0}, norm_sum{0, 0};
+  // Each phase's mean velocity over its solved rows, about which the residual is normalized.
+  std::array<double, 2> sum{0, 0}, count{0, 0};
+  for (std::size_t r = 0; r < numbering.owned_locals.size(); ++r) {
+    const auto ul = static_cast<std::size_t>(numbering.owned_locals[r]);
+    if (m_moves[gas]) sum[gas] += u_g[ul], count[gas] += 1;
+    if (m_moves[solids] && rows[solids][r].active) sum[solids] += u_s[ul], count[solids] += 1;
+  }
+  const double least_speed = 1e-3 * m_reference_speed;
+  std::array<MomentumResidual, 2> residual;
+  for (const Phase phase : {gas, solids}) {
+    const double n = layout.comm().sum(count[phase]);
+    const double mean = n > 0 ? layout.comm().sum(sum[phase]) / n : 0.0;
+    residual[phase] = MomentumResidual(m_residual_normalization, mean, m_velocity_scale, least_speed);
+  }
   std::array<std::vector<double>, 2> x;
   for (auto& v : x) v.resize(numbering.owned_locals.size());
   for (const int e : {gas_momentum_x + d, solids_momentum_x + d}) {
@@ -64,12 +78,11 @@ void FlowSolver::predict_momentum(int d, run::FlowState& state, const run::FlowS
     const double beta_v = coupled || (m_moves[gas] && m_drag) ? beta * any.volume : 0.0;
     const double A_g = g ? g->a + beta_v : 0.0, A_s = s ? s->a + beta_v : 0.0;
     const double R_g = g ? g->b + g->neighbours_u : 0.0, R_s = s ? s->b + s->neighbours_u : 0.0;
-    const double U = m_velocity_scale;
 
     if (g) {
-      const double row_residual = std::abs(R_g + beta_v * u_s[ul] - A_g * u_g[ul]);
-      residual_sum[gas] += row_residual;
-      norm_sum[gas] += A_g * U;
+      const double row_residual = residual[gas].add(A_g, A_g * u_g[ul] - g->neighbours_u,
+                                                    A_g - g->neighbours_a, g->b + beta_v * u_s[ul],
+                                                    g->transient);
       record_worst(gas_momentum_x + d, row_residual, l);
       double diagonal = A_g, rhs = g->b;
       if (s) {
@@ -93,9 +106,9 @@ void FlowSolver::predict_momentum(int d, run::FlowState& state, const run::FlowS
       const MomentumRow& row = rows[solids][r];
       double diagonal = 1.0, rhs = 0.0;
       if (s) {
-        const double row_residual = std::abs(R_s + beta_v * u_g[ul] - A_s * u_s[ul]);
-        residual_sum[solids] += row_residual;
-        norm_sum[solids] += A_s * U;
+        const double row_residual = residual[solids].add(A_s, A_s * u_s[ul] - s->neighbours_u,
+                                                         A_s - s->neighbours_a, s->b + beta_v * u_g[ul],
+                                                         s->transient);
         record_worst(solids_momentum_x + d, row_residual, l);
         diagonal = A_s;
         rhs = s->b;
@@ -153,10 +166,8 @@ void FlowSolver::predict_momentum(int d, run::FlowState& state, const run::FlowS
       u[static_cast<std::size_t>(numbering.owned_locals[r])] = x[phase][r];
     parallel::exchange_halo<double>(layout, u);
     parallel::exchange_halo<double>(layout, m_d[phase][ud]);
-    const double residual = layout.comm().sum(residual_sum[phase]);
-    const double norm = layout.comm().sum(norm_sum[phase]);
     residuals.value[static_cast<std::size_t>((phase == gas ? gas_momentum_x : solids_momentum_x) + d)] =
-        residual <= 1e-300 ? 0.0 : residual / std::max(norm, 1e-300);
+        residual[phase].value(layout.comm());
   }
   if (m_moves[solids]) parallel::exchange_halo<double>(layout, m_e[ud]);
 }

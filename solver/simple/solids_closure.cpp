@@ -19,7 +19,7 @@ void FlowSolver::evaluate_solids_stress(run::FlowState& state) {
     m_viscosity[gas][static_cast<std::size_t>(l)] = state.gas_fraction[static_cast<std::size_t>(l)] * mu_g;
   if (!m_stress) return;
 
-  compute_strain_rate(m_domain, state.solids_velocity, m_strain_rate, m_divergence);
+  compute_strain_rate(m_domain, state.solids_velocity, m_strain_rate, m_divergence, m_no_slip_strain_regions);
   std::vector<int> cells;
   std::vector<double> fraction, rate, divergence;
   for (int l = 0; l < layout.local_count(); ++l) {

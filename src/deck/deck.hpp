@@ -109,10 +109,13 @@ struct Numerics {
   std::string algorithm = "simplec";     // simplec | simple
   std::string convection = "superbee";   // upwind | superbee | muscl | van_leer | minmod
   double tolerance = 1e-4;               // normalized residual for convergence of a step
+  std::string residual_normalization = "velocity-scale";  // velocity-scale | deviation
   int max_outer_iterations = 40;         // before the step is redone with dt / 2
   int easy_outer_iterations = 8;         // at or below: the next step grows
   double dt_growth = 1.2;                // factor after an easy step
   double relax_velocity = 0.7;           // α_u
+  bool wall_shear_in_strain_rate = false;  // no-slip walls' shear in the wall cells' γ̇
+  double solids_bulk_viscosity_ratio = 0.0;  // λ_s = r μ_s added to the solids stress
   double relax_pressure = 1.0;           // α_p (SIMPLE needs about 0.3)
   std::string pressure_preconditioner = "hypre";  // hypre | gamg
   double pressure_tolerance = 1e-4;      // relative, per outer iteration

@@ -218,6 +218,12 @@ const Section<Numerics>& numerics_section() {
           .doc("Convection scheme: first-order upwind, or a TVD limiter by deferred correction."),
       key(&Numerics::tolerance, "tolerance").unit("-").init(1e-4).within(1e-12, 1.0)
           .doc("A step has converged when every normalized residual is below this."),
+      key(&Numerics::residual_normalization, "residual_normalization").init("velocity-scale")
+          .one_of({"velocity-scale", "deviation"})
+          .doc("Momentum residuals over Σ a_P U (U the largest velocity), or over "
+               "Σ(|Lu − L1 ū| + |s − L1 ū|), the forces that do not cancel for a uniform field "
+               "(OpenFOAM's): the latter lets no large viscosity hide an unbalanced force "
+               "(the chute), at 1.6x the 10 mm bin's steps."),
       key(&Numerics::max_outer_iterations, "max_outer_iterations").init(40).within(1, 1000)
           .doc("SIMPLE outer iterations before the step is redone with dt / 2."),
       key(&Numerics::easy_outer_iterations, "easy_outer_iterations").init(8).within(1, 1000)
@@ -226,6 +232,15 @@ const Section<Numerics>& numerics_section() {
           .doc("Factor by which dt grows after an easy step (up to run.dt_max)."),
       key(&Numerics::relax_velocity, "relax_velocity").unit("-").init(0.7).within(0.05, 1.0)
           .doc("Under-relaxation of the momentum equations, α_u."),
+      key(&Numerics::wall_shear_in_strain_rate, "wall_shear_in_strain_rate").init(false)
+          .doc("Whether a stationary no-slip solids wall's shear enters the closure's strain rate "
+               "in the cells beside it (ghost value −u_c, as MFIX), instead of one-sided interior "
+               "differences."),
+      key(&Numerics::solids_bulk_viscosity_ratio, "solids_bulk_viscosity_ratio").unit("-").init(0.0)
+          .within(0.0, 100.0)
+          .doc("r: the solids stress gains a bulk viscosity λ_s = r μ_s (σ = P_s I − 2 μ_s S − "
+               "λ_s ∇·u I), which dissipates the work a rate-dependent P_s does on expansion. 0: "
+               "none (the closures' own λ_s is not used)."),
       key(&Numerics::relax_pressure, "relax_pressure").unit("-").init(1.0).within(0.01, 1.0)
           .doc("Under-relaxation of the pressure correction, α_p."),
       key(&Numerics::pressure_preconditioner, "pressure_preconditioner").init("hypre")

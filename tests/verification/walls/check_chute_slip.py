@@ -1,6 +1,6 @@
 #!/usr/bin/python3
-"""The chute with dense-slip sidewalls (cases/chute/sidewalls-slip.toml) at its last snapshot:
-the layer still slides as a sheared layer, with no secondary flow and no pressure spike.
+"""The chute with sidewalls (cases/chute/sidewalls-slip.toml, also sidewalls.toml's start) at its
+last snapshot: the layer still moves, with no secondary flow and no pressure spike.
 
 usage: check_chute_slip.py RUN_DIR --end-time T --min-speed V
 

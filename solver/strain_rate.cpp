@@ -30,51 +30,36 @@ void compute_strain_rate(const parallel::Domain& domain,
     double gradient[3][3] = {};  // gradient[a][b] = ∂u_a/∂x_b
     for (int b = 0; b < 3; ++b) {
       const int minus = layout.neighbour(l, 2 * b), plus = layout.neighbour(l, 2 * b + 1);
-      const bool has_minus = minus >= 0 && layout.kind(minus) == CellKind::fluid;
-      const bool has_plus = plus >= 0 && layout.kind(plus) == CellKind::fluid;
-      // A stationary no-slip wall beside the cell: its ghost value −u_c (the wall's zero half a
-      // cell away), so the wall shear enters γ̇ as MFIX's ghost cells put it there.
-      auto at_wall = [&](int neighbour) {
-        return !no_slip_regions.empty() && neighbour >= 0 && layout.kind(neighbour) == CellKind::boundary &&
-               layout.region(neighbour) >= 0 &&
-               no_slip_regions[static_cast<std::size_t>(layout.region(neighbour))];
-      };
-      const bool wall_minus = !has_minus && at_wall(minus), wall_plus = !has_plus && at_wall(plus);
-      if (wall_minus || wall_plus) {
-        const auto& axis = g.axis(b);
-        const double width = axis.width(ijk[static_cast<std::size_t>(b)]);
-        // Distance from the centre to the value used on one side: a ghost a width away, a fluid
-        // neighbour's centre, or the cell's own value.
-        auto side = [&](bool fluid, bool wall, int neighbour) {
-          return wall ? width
-                 : fluid ? 0.5 * (width + axis.width(layout.index3(neighbour)[static_cast<std::size_t>(b)]))
-                         : 0.0;
-        };
-        for (int a = 0; a < 3; ++a) {
-          if (a == b) continue;
-          const auto& u = velocity[static_cast<std::size_t>(a)];
-          const double own = centred(layout, u, l, a);
-          const double lower = wall_minus ? -own : has_minus ? centred(layout, u, minus, a) : own;
-          const double upper = wall_plus ? -own : has_plus ? centred(layout, u, plus, a) : own;
-          gradient[a][b] = (upper - lower) / (side(has_minus, wall_minus, minus) + side(has_plus, wall_plus, plus));
-        }
-        continue;
-      }
-      if (!has_minus && !has_plus) continue;
-      const int lo = has_minus ? minus : l, hi = has_plus ? plus : l;
-      // Distance between the centres used (periodic wrap: neighbours are a width away).
       const auto& axis = g.axis(b);
-      const double distance =
-          (has_minus ? 0.5 * (axis.width(ijk[static_cast<std::size_t>(b)]) +
-                              axis.width(layout.index3(lo)[static_cast<std::size_t>(b)]))
-                     : 0.0) +
-          (has_plus ? 0.5 * (axis.width(ijk[static_cast<std::size_t>(b)]) +
-                             axis.width(layout.index3(hi)[static_cast<std::size_t>(b)]))
-                    : 0.0);
+      const double width = axis.width(ijk[static_cast<std::size_t>(b)]);
+      // What each side contributes: a fluid neighbour its centre value, half the two widths
+      // away (periodic wrap: a width away); a stationary no-slip wall flagged in no_slip_regions
+      // the ghost value −u_c a width away (the wall's zero half a cell away, as MFIX's ghost
+      // cells put the wall shear into γ̇); anything else the cell's own value at no distance
+      // (a one-sided difference).
+      enum class Side { fluid, wall, none };
+      auto side_of = [&](int neighbour) {
+        if (neighbour < 0) return Side::none;
+        if (layout.kind(neighbour) == CellKind::fluid) return Side::fluid;
+        if (no_slip_regions.empty() || layout.kind(neighbour) != CellKind::boundary) return Side::none;
+        const int region = layout.region(neighbour);
+        return region >= 0 && no_slip_regions[static_cast<std::size_t>(region)] ? Side::wall : Side::none;
+      };
+      auto distance = [&](Side side, int neighbour) {
+        return side == Side::fluid ? 0.5 * (width + axis.width(layout.index3(neighbour)[static_cast<std::size_t>(b)]))
+               : side == Side::wall ? width : 0.0;
+      };
+      const Side lower_side = side_of(minus), upper_side = side_of(plus);
+      if (lower_side == Side::none && upper_side == Side::none) continue;
+      const double span = distance(lower_side, minus) + distance(upper_side, plus);
       for (int a = 0; a < 3; ++a) {
         if (a == b) continue;
         const auto& u = velocity[static_cast<std::size_t>(a)];
-        gradient[a][b] = (centred(layout, u, hi, a) - centred(layout, u, lo, a)) / distance;
+        const double own = centred(layout, u, l, a);
+        auto value = [&](Side side, int neighbour) {
+          return side == Side::fluid ? centred(layout, u, neighbour, a) : side == Side::wall ? -own : own;
+        };
+        gradient[a][b] = (value(upper_side, plus) - value(lower_side, minus)) / span;
       }
     }
     for (int a = 0; a < 3; ++a) {

@@ -158,16 +158,10 @@ void FlowSolver::assemble_momentum(Phase phase, int d, const run::FlowState& sta
       row.b += row.fraction * (state.gas_pressure[uc] - state.gas_pressure[un]) * row.area;
     // P_s = 0 in a pressure-boundary cell: the solids leaving through an outlet are free of stress.
     if (phase == solids) row.b += (state.solids_pressure[uc] - state.solids_pressure[un]) * row.area;
-    // The optional bulk viscosity λ_s = r μ_s: σ gains −λ_s ∇·u I, lagged like P_s (zero beyond
-    // a fluid cell, as the wall-normal velocity and an outlet's P_s are).
-    if (phase == solids && m_bulk_viscosity_ratio > 0.0) {
-      auto bulk_stress = [&](int local) {
-        const auto u_local = static_cast<std::size_t>(local);
-        return layout.kind(local) == grid::CellKind::fluid
-                   ? m_bulk_viscosity_ratio * mu[u_local] * m_divergence[u_local] : 0.0;
-      };
-      row.b += (bulk_stress(n) - bulk_stress(l)) * row.area;
-    }
+    // The optional bulk viscosity λ_s = r μ_s: σ gains −λ_s ∇·u I, lagged like P_s. It is zero
+    // beyond a fluid cell, as an outlet's P_s is: compute_strain_rate gives ∇·u = 0 there.
+    if (phase == solids && m_bulk_viscosity_ratio > 0.0)
+      row.b += m_bulk_viscosity_ratio * (mu[un] * m_divergence[un] - mu[uc] * m_divergence[uc]) * row.area;
     row.b += row.fraction * rho * m_deck.physics.gravity[ud] * row.volume;
     if (phase == gas && !m_source[ud].empty()) row.b += m_source[ud][uc] * row.volume;
     const double a_transient = row.fraction * rho * row.volume / dt;

@@ -46,20 +46,25 @@ void FlowSolver::predict_momentum(int d, run::FlowState& state, const run::FlowS
   for (const Phase phase : {gas, solids})
     if (m_moves[phase]) assemble_momentum(phase, d, state, old, dt, rows[phase]);
 
-  // Each phase's mean velocity over its solved rows, about which the residual is normalized.
-  std::array<double, 2> sum{0, 0}, count{0, 0};
-  for (std::size_t r = 0; r < numbering.owned_locals.size(); ++r) {
-    const auto ul = static_cast<std::size_t>(numbering.owned_locals[r]);
-    if (m_moves[gas]) sum[gas] += u_g[ul], count[gas] += 1;
-    if (m_moves[solids] && rows[solids][r].active) sum[solids] += u_s[ul], count[solids] += 1;
+  // The deviation normalization measures each row about the phase's mean velocity over its
+  // solved rows (two collectives per phase, so only when that normalization is chosen).
+  std::array<double, 2> mean{0, 0};
+  if (m_residual_normalization == ResidualNormalization::deviation) {
+    std::array<double, 2> sum{0, 0}, count{0, 0};
+    for (std::size_t r = 0; r < numbering.owned_locals.size(); ++r) {
+      const auto ul = static_cast<std::size_t>(numbering.owned_locals[r]);
+      if (m_moves[gas]) sum[gas] += u_g[ul], count[gas] += 1;
+      if (m_moves[solids] && rows[solids][r].active) sum[solids] += u_s[ul], count[solids] += 1;
+    }
+    for (const Phase phase : {gas, solids}) {
+      const double n = layout.comm().sum(count[phase]);
+      mean[phase] = n > 0 ? layout.comm().sum(sum[phase]) / n : 0.0;
+    }
   }
   const double least_speed = 1e-3 * m_reference_speed;
   std::array<MomentumResidual, 2> residual;
-  for (const Phase phase : {gas, solids}) {
-    const double n = layout.comm().sum(count[phase]);
-    const double mean = n > 0 ? layout.comm().sum(sum[phase]) / n : 0.0;
-    residual[phase] = MomentumResidual(m_residual_normalization, mean, m_velocity_scale, least_speed);
-  }
+  for (const Phase phase : {gas, solids})
+    residual[phase] = MomentumResidual(m_residual_normalization, mean[phase], m_velocity_scale, least_speed);
   std::array<std::vector<double>, 2> x;
   for (auto& v : x) v.resize(numbering.owned_locals.size());
   for (const int e : {gas_momentum_x + d, solids_momentum_x + d}) {

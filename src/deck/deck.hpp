@@ -112,6 +112,7 @@ struct Numerics {
   std::string residual_normalization = "velocity-scale";  // velocity-scale | deviation
   int max_outer_iterations = 40;         // before the step is redone with dt / 2
   int easy_outer_iterations = 8;         // at or below: the next step grows
+  int hard_outer_iterations = 0;         // above (if > 0): the next step shrinks
   double dt_growth = 1.2;                // factor after an easy step
   double relax_velocity = 0.7;           // α_u
   bool wall_shear_in_strain_rate = false;  // no-slip walls' shear in the wall cells' γ̇

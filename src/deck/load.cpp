@@ -362,6 +362,15 @@ void check_run(const toml::table& root, Deck& deck, Diagnostics& diag) {
                "expected dt_min <= dt_initial <= dt_max, got " + to_toml_text(r.dt_min) +
                    ", " + to_toml_text(r.dt_initial) + ", " + to_toml_text(r.dt_max));
   }
+  const auto& n = deck.numerics;
+  if (n.hard_outer_iterations > 0 && n.hard_outer_iterations <= n.easy_outer_iterations) {
+    const auto* numerics = root.get_as<toml::table>("numerics");
+    diag.error(numerics ? numerics->source() : root.source(), "numerics.hard_outer_iterations",
+               "expected 0 or more than easy_outer_iterations (" +
+                   std::to_string(n.easy_outer_iterations) + "), got " +
+                   std::to_string(n.hard_outer_iterations) +
+                   ": dt would grow and shrink on the same step");
+  }
 }
 
 void read_material_and_models(const toml::table& root, Deck& deck, Diagnostics& diag) {

@@ -5,7 +5,8 @@
 // Adaptive time step: a step that does not converge within numerics.max_outer_iterations (or
 // produces NaN) is undone and redone with dt / 2; a step that converges within
 // numerics.easy_outer_iterations lets the next grow by numerics.dt_growth, up to run.dt_max;
-// one that needs more than numerics.hard_outer_iterations (if set) makes the next shrink by it.
+// one that needs more than numerics.hard_outer_iterations (if set) makes the next shrink by it,
+// down to run.dt_max / 4.
 // Steps are shortened to land exactly on snapshot times and on end_time, and the state at
 // end_time is always written. Every change of dt is logged. A step that fails at run.dt_min stops the run.
 

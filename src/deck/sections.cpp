@@ -230,9 +230,10 @@ const Section<Numerics>& numerics_section() {
           .doc("A step converged in at most this many iterations lets dt grow."),
       key(&Numerics::hard_outer_iterations, "hard_outer_iterations").init(0).within(0, 1000)
           .doc("A step converged in more than this many iterations makes the next dt smaller by "
-               "dt_growth (not below run.dt_min), so dt settles where a step takes "
+               "dt_growth (not below run.dt_max / 4), so dt settles where a step takes "
                "easy_outer_iterations to hard_outer_iterations; 0: dt shrinks only when a step "
-               "fails. Must exceed easy_outer_iterations."),
+               "fails (the default: where the iterations per step hardly depend on dt, as with a tight "
+               "tolerance, shrinking only adds steps). Must exceed easy_outer_iterations."),
       key(&Numerics::dt_growth, "dt_growth").unit("-").init(1.2).within(1.0, 2.0)
           .doc("Factor by which dt grows after an easy step (up to run.dt_max)."),
       key(&Numerics::relax_velocity, "relax_velocity").unit("-").init(0.7).within(0.05, 1.0)

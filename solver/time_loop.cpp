@@ -75,12 +75,10 @@ RunSummary run_time_loop(const TimeLoopContext& context, FlowSolver& solver, run
     ++step;
     summary.last_dt = dt_try;
     context.monitor.append(time, monitor_row(context, solver, state, dt_try, result));
+    double next_dt = dt;
     if (result.iterations <= numerics.easy_outer_iterations && dt_try >= dt * (1 - 1e-12) &&
         dt < run.dt_max) {
-      const double grown = std::min(dt * numerics.dt_growth, run.dt_max);
-      context.log(fmt::format("t = {:.6g} s: converged in {} outer iterations; dt {:.3g} s -> {:.3g} s",
-                              time, result.iterations, dt, grown));
-      dt = grown;
+      next_dt = std::min(dt * numerics.dt_growth, run.dt_max);
     } else if (numerics.hard_outer_iterations > 0 &&
                result.iterations > numerics.hard_outer_iterations &&
                dt / numerics.dt_growth >= hard_step_floor * run.dt_max) {
@@ -88,10 +86,12 @@ RunSummary run_time_loop(const TimeLoopContext& context, FlowSolver& solver, run
       // bin: 5.75 at 1 ms, 16.3 at 1.53 ms), so a hard step is cheaper done as two easier ones.
       // Not below dt_max/4: far below it a step is hard for other reasons (a bed compacting
       // from rest takes 10-15 outer iterations at any dt) and shrinking only adds steps.
-      const double shrunk = dt / numerics.dt_growth;
+      next_dt = dt / numerics.dt_growth;
+    }
+    if (next_dt != dt) {
       context.log(fmt::format("t = {:.6g} s: converged in {} outer iterations; dt {:.3g} s -> {:.3g} s",
-                              time, result.iterations, dt, shrunk));
-      dt = shrunk;
+                              time, result.iterations, dt, next_dt));
+      dt = next_dt;
     }
     // The snapshot records the next dt, so a restart continues exactly as this run would.
     const bool stop = run::stop_requested(context.domain.layout.comm());

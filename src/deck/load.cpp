@@ -354,7 +354,7 @@ void check_solids_walls(const toml::table& root, const Deck& deck, Diagnostics& 
   }
 }
 
-void check_run(const toml::table& root, Deck& deck, Diagnostics& diag) {
+void check_time_stepping(const toml::table& root, Deck& deck, Diagnostics& diag) {
   const auto& r = deck.run;
   if (!(r.dt_min <= r.dt_initial && r.dt_initial <= r.dt_max)) {
     const auto* run = root.get_as<toml::table>("run");
@@ -413,7 +413,7 @@ void read_all(const toml::table& root, Deck& deck, Diagnostics& diag) {
                deck.numerics, diag);
   read_section(subtable(root, "output", "output", diag), output_section(), "output", deck.output,
                diag, root.source());
-  check_run(root, deck, diag);
+  check_time_stepping(root, deck, diag);
 }
 
 std::optional<toml::table> parse(const std::string& text, const std::string& source_name,

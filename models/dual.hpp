@@ -62,4 +62,12 @@ inline Dual abs(Dual a) { return a.value < 0.0 ? -a : a; }
 constexpr double value_of(double x) { return x; }
 constexpr double value_of(Dual x) { return x.value; }
 
+// x^{3/2} as x √x, for a double or a Dual: several times cheaper than pow, which dominated the
+// closures' cost per cell.
+template <class Real>
+Real three_halves_power(Real x) {
+  using std::sqrt;
+  return x * sqrt(x);
+}
+
 }  // namespace bagnold::models

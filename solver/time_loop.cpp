@@ -24,7 +24,8 @@ std::vector<double> monitor_row(const TimeLoopContext& context, const FlowSolver
 }
 
 namespace {
-// Hard steps (numerics.hard_outer_iterations) shrink dt down to this fraction of run.dt_max.
+// Hard steps (numerics.hard_outer_iterations) shrink dt down to this fraction of run.dt_max
+// (and never below run.dt_min).
 constexpr double hard_step_floor = 0.25;
 }  // namespace
 
@@ -81,7 +82,7 @@ RunSummary run_time_loop(const TimeLoopContext& context, FlowSolver& solver, run
       next_dt = std::min(dt * numerics.dt_growth, run.dt_max);
     } else if (numerics.hard_outer_iterations > 0 &&
                result.iterations > numerics.hard_outer_iterations &&
-               dt / numerics.dt_growth >= hard_step_floor * run.dt_max) {
+               dt / numerics.dt_growth >= std::max(hard_step_floor * run.dt_max, run.dt_min)) {
       // The outer iterations per step grow faster than dt near the coupling's limit (the 2.5 mm
       // bin: 5.75 at 1 ms, 16.3 at 1.53 ms), so a hard step is cheaper done as two easier ones.
       // Not below dt_max/4: far below it a step is hard for other reasons (a bed compacting

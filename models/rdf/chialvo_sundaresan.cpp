@@ -1,6 +1,4 @@
 // The sheared-system radial distribution function at contact of MKT, App. B Eq. 31.
-#include <cmath>
-
 #include "models/dual.hpp"
 #include "models/rdf/radial_distribution.hpp"
 
@@ -8,11 +6,8 @@ namespace bagnold::models::rdf {
 
 template <class Real>
 Real chialvo_sundaresan(Real phi, double critical_fraction, double alpha_2) {
-  using std::sqrt;
-  // The (φ_c − φ)^{−3/2} divergence is the DEM scaling of App. B Fig. 6a (p/ρ_s φ T ~ g0);
-  // the 3/2 power as x √x, several times cheaper than pow in the closure's hot loop.
-  const Real gap = critical_fraction - phi;
-  return carnahan_starling(phi) + alpha_2 * phi * phi / (gap * sqrt(gap));
+  // The (φ_c − φ)^{−3/2} divergence is the DEM scaling of App. B Fig. 6a (p/ρ_s φ T ~ g0).
+  return carnahan_starling(phi) + alpha_2 * phi * phi / three_halves_power(critical_fraction - phi);
 }
 
 template double chialvo_sundaresan(double, double, double);

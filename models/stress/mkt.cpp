@@ -22,10 +22,8 @@ double friction_factor_psi(double restitution, double friction, double psi_expon
 
 template <class Real>
 Real dense_to_dilute_chi(Real modified_inertial_number, double transition_inertial_number) {
-  using std::sqrt;
-  // The 3/2 powers as x √x (pow dominated the closure's cost).
-  const Real rising = modified_inertial_number * sqrt(modified_inertial_number);
-  return rising / (transition_inertial_number * std::sqrt(transition_inertial_number) + rising);
+  const Real rising = three_halves_power(modified_inertial_number);
+  return rising / (three_halves_power(transition_inertial_number) + rising);
 }
 
 template <class Real>

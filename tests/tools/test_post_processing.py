@@ -257,6 +257,10 @@ class PostProcessing(unittest.TestCase):
         self.assertEqual(code, 0, err)
         read_png(self, png2)
         self.assertIn("snapshot_000003.h5", out)  # nearest to 1.4 is 1.5
+        code, out, err = run("plot-slice", self.run_dir, "--times", "1.0", "--range=-0.25,0.1",
+                             "--output", png2)
+        self.assertEqual(code, 0, err)
+        self.assertIn("colour scale -0.25 to 0.1", out)
 
     def test_plot_slice_bad_inputs(self):
         out = os.path.join(self.tmp, "bad.png")
@@ -272,6 +276,10 @@ class PostProcessing(unittest.TestCase):
                           message="outside the domain")
         self.assert_fails("plot-slice", self.run_dir, "--times", "0", "--axis", "z", "--output", out,
                           message="invalid choice")
+        self.assert_fails("plot-slice", self.run_dir, "--times", "0", "--range", "0.6", "--output", out,
+                          message="--range wants MIN,MAX")
+        self.assert_fails("plot-slice", self.run_dir, "--times", "0", "--range", "0.6,0", "--output", out,
+                          message="MIN < MAX")
         self.assert_fails("plot-slice", os.path.join(self.tmp, "empty_run2"), "--times", "0",
                           message="does not exist")
         os.makedirs(os.path.join(self.tmp, "no_snapshots"), exist_ok=True)

@@ -36,6 +36,17 @@ class PostError(Exception):
     """A user-facing error: the tools print it and exit 1."""
 
 
+def parse_numbers(text, option):
+    """The numbers of a comma-separated command-line value, e.g. `--times 0,0.5,1`."""
+    try:
+        numbers = [float(x) for x in text.split(",") if x.strip()]
+    except ValueError:
+        raise PostError(f"{option} wants comma-separated numbers, not '{text}'")
+    if not numbers:
+        raise PostError(f"{option} is empty")
+    return numbers
+
+
 def command_line():
     """The reproducing command, as the user typed it (program path as invoked)."""
     return " ".join(shlex.quote(a) for a in sys.argv)

@@ -26,7 +26,7 @@ StepResult FlowSolver::advance(run::FlowState& state, const run::FlowState& old,
     if (m_pressure_system) m_pressure_system->reuse_preconditioner(iteration > 1);
     m_velocity_scale = std::min(residual_velocity_scale(state), largest_scale);
     evaluate_drag(state);
-    evaluate_solids_stress(state);
+    evaluate_solids_stress(state, old, dt);
     result.residuals = Residuals{};
     for (int d = 0; d < 3; ++d) predict_momentum(d, state, old, dt, result.residuals);
     if (m_moves[gas]) result.residuals.value[mixture_continuity] = correct_pressure(state);

@@ -115,8 +115,9 @@ class FlowSolver {
 
  private:
   // Step 0: β at cell centres; P_s, dP_s/dε_s, μ_s, Θ from the closure; the gas's ε_g μ_g.
+  // P_s is evaluated at γ̇_P (state.pressure_shear_rate), relaxed from old's over dt.
   void evaluate_drag(const run::FlowState& state);
-  void evaluate_solids_stress(run::FlowState& state);
+  void evaluate_solids_stress(run::FlowState& state, const run::FlowState& old, double dt);
   // Step 1: assembles one phase's momentum rows for direction d (owned unknown faces, in row order).
   void assemble_momentum(Phase phase, int d, const run::FlowState& state,
                          const run::FlowState& old, double dt, std::vector<MomentumRow>& rows);

@@ -138,7 +138,7 @@ void FlowSolver::limit_compression(const run::FlowState& state, std::vector<doub
   std::vector<double> lambda(n, 1.0), candidate(n), rate(n), divergence(n);
   std::vector<double> pressure(n), derivative(n), shear(n), bulk(n), temperature(n);
   for (std::size_t k = 0; k < n; ++k) {
-    rate[k] = m_strain_rate[static_cast<std::size_t>(cells[k])];
+    rate[k] = state.pressure_shear_rate[static_cast<std::size_t>(cells[k])];  // P_s's rate
     divergence[k] = m_divergence[static_cast<std::size_t>(cells[k])];
   }
   for (int halving = 0; halving < 40; ++halving) {

@@ -30,14 +30,16 @@ struct StartPoint {
 };
 
 // Reads every field of the snapshot into `state` (any number of ranks); throws io::Hdf5Error
-// when the snapshot does not fit this deck's grid or geometry.
+// when the snapshot does not fit this deck's grid or geometry. Snapshots written before
+// pressure_shear_rate existed restart with it unset (the closure starts it at the current rate).
 StartPoint restore_state(const std::string& file_or_directory, const parallel::Domain& domain,
                          run::FlowState& state) {
   StartPoint start;
   start.snapshot = run::find_snapshot(file_or_directory);
   std::vector<std::vector<double>> fields;
   const auto contents =
-      io::read_snapshot(start.snapshot, domain.layout, run::FlowState::field_names(), fields);
+      io::read_snapshot(start.snapshot, domain.layout, run::FlowState::field_names(), fields,
+                        {"pressure_shear_rate"});
   const auto targets = state.fields();
   for (std::size_t f = 0; f < targets.size(); ++f) *targets[f] = std::move(fields[f]);
   start.time = contents.info.time;

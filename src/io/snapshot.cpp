@@ -263,7 +263,8 @@ void write_snapshot(const std::string& path, const parallel::Layout& layout,
 
 SnapshotContents read_snapshot(const std::string& path, const parallel::Layout& layout,
                                const std::vector<std::string>& names,
-                               std::vector<std::vector<double>>& fields) {
+                               std::vector<std::vector<double>>& fields,
+                               const std::vector<std::string>& optional) {
   const auto& g = layout.grid();
   File file = open_parallel(path, layout.comm().get(), false);
   if (file.get() < 0) throw Hdf5Error("cannot open snapshot " + path);
@@ -323,8 +324,12 @@ SnapshotContents read_snapshot(const std::string& path, const parallel::Layout& 
   for (std::size_t f = 0; f < names.size(); ++f) {
     const std::string field_path = "fields/" + names[f];
     if (H5Lexists(file.get(), "fields", H5P_DEFAULT) <= 0 ||
-        H5Lexists(file.get(), field_path.c_str(), H5P_DEFAULT) <= 0)
-      throw Hdf5Error("snapshot " + path + " has no field '" + names[f] + "'");
+        H5Lexists(file.get(), field_path.c_str(), H5P_DEFAULT) <= 0) {
+      if (std::find(optional.begin(), optional.end(), names[f]) == optional.end())
+        throw Hdf5Error("snapshot " + path + " has no field '" + names[f] + "'");
+      std::fill(fields[f].begin(), fields[f].end(), std::nan(""));
+      continue;
+    }
     Dataset ds(check(H5Dopen2(file.get(), field_path.c_str(), H5P_DEFAULT), field_path.c_str()));
     buffer.assign(placement.fluid_locals.size(), 0.0);
     transfer_points(ds.get(), H5T_NATIVE_DOUBLE, placement.fluid_coordinates, 3, buffer.data(), false);

@@ -55,9 +55,11 @@ struct SnapshotContents {
 
 // Collective: reads the named fields into `fields` (local_count() entries each, halo included)
 // for whatever layout the reader has, so a run restarts on any number of ranks. Throws when the
-// snapshot's grid differs from `layout`'s grid.
+// snapshot's grid differs from `layout`'s grid, or lacks a named field that is not in
+// `optional` (an optional field the file lacks reads as NaN and is not in field_names).
 SnapshotContents read_snapshot(const std::string& path, const parallel::Layout& layout,
                                const std::vector<std::string>& names,
-                               std::vector<std::vector<double>>& fields);
+                               std::vector<std::vector<double>>& fields,
+                               const std::vector<std::string>& optional = {});
 
 }  // namespace bagnold::io

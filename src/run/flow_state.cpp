@@ -1,8 +1,11 @@
 #include "src/run/flow_state.hpp"
 
+#include <cmath>
+
 namespace bagnold::run {
 
 namespace {
+constexpr std::size_t cell_field_count = 6;  // the fields before the velocities
 const io::Centering face_of[3] = {io::Centering::x_face, io::Centering::y_face,
                                   io::Centering::z_face};
 const char* const axis_suffix[3] = {"_x", "_y", "_z"};
@@ -11,11 +14,13 @@ const char* const axis_suffix[3] = {"_x", "_y", "_z"};
 FlowState::FlowState(int local_count) {
   for (auto* f : fields()) f->assign(static_cast<std::size_t>(local_count), 0.0);
   gas_fraction.assign(static_cast<std::size_t>(local_count), 1.0);
+  pressure_shear_rate.assign(static_cast<std::size_t>(local_count), std::nan(""));
 }
 
 std::vector<std::string> FlowState::field_names() {
   std::vector<std::string> names = {"solids_fraction", "gas_fraction", "gas_pressure",
-                                    "solids_pressure", "granular_temperature"};
+                                    "solids_pressure", "granular_temperature",
+                                    "pressure_shear_rate"};
   for (int d = 0; d < 3; ++d) names.push_back(std::string("gas_velocity") + axis_suffix[d]);
   for (int d = 0; d < 3; ++d) names.push_back(std::string("solids_velocity") + axis_suffix[d]);
   return names;
@@ -25,7 +30,7 @@ std::vector<std::string> FlowState::field_names() {
 template <class Pointer, class State>
 std::vector<Pointer> all_fields(State& s) {
   std::vector<Pointer> out = {&s.solids_fraction, &s.gas_fraction, &s.gas_pressure,
-                              &s.solids_pressure, &s.granular_temperature};
+                              &s.solids_pressure, &s.granular_temperature, &s.pressure_shear_rate};
   for (auto& v : s.gas_velocity) out.push_back(&v);
   for (auto& v : s.solids_velocity) out.push_back(&v);
   return out;
@@ -45,7 +50,7 @@ std::vector<io::FieldView> FlowState::views() const {
   std::vector<io::FieldView> out;
   for (std::size_t f = 0; f < all.size(); ++f) {
     io::Centering centering = io::Centering::cell;
-    if (f >= 5) centering = face_of[(f - 5) % 3];
+    if (f >= cell_field_count) centering = face_of[(f - cell_field_count) % 3];
     out.push_back({names[f], centering, *all[f]});
   }
   return out;

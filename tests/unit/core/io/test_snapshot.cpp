@@ -143,5 +143,24 @@ TEST(Snapshot, MissingFieldIsReportedByName) {
   }
 }
 
+// A field named optional that the file lacks (a snapshot from before the field existed) reads
+// as NaN everywhere and is left out of field_names; the fields the file has read as before.
+TEST(Snapshot, MissingOptionalFieldReadsAsNaN) {
+  const std::string path = file_name("snapshot_optional");
+  Written w(path);
+  std::vector<std::vector<double>> fields;
+  const auto contents = io::read_snapshot(path, w.domain.layout,
+                                          {"solids_fraction", "pressure_shear_rate"}, fields,
+                                          {"pressure_shear_rate"});
+  ASSERT_EQ(fields.size(), 2u);
+  EXPECT_EQ(contents.field_names, std::vector<std::string>{"solids_fraction"});
+  for (const double v : fields[1]) EXPECT_TRUE(std::isnan(v));
+  const auto& layout = w.domain.layout;
+  for (int l = 0; l < layout.local_count(); ++l)
+    if (layout.kind(l) == grid::CellKind::fluid) {
+      EXPECT_EQ(fields[0][static_cast<std::size_t>(l)], w.values[static_cast<std::size_t>(l)]);
+    }
+}
+
 }  // namespace
 }  // namespace bagnold::tests

@@ -1,5 +1,6 @@
 #include "src/run/output_writer.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -8,6 +9,14 @@
 namespace bagnold::run {
 
 namespace fs = std::filesystem;
+
+namespace {
+std::string snapshot_name(std::size_t number) {
+  char name[64];
+  std::snprintf(name, sizeof name, "snapshot_%06zu.h5", number);
+  return name;
+}
+}  // namespace
 
 OutputWriter::OutputWriter(const deck::Deck& deck, const parallel::Domain& domain)
     : m_domain(domain),
@@ -56,15 +65,27 @@ std::string OutputWriter::write_diagnostic(const FlowState& state, double time, 
 }
 
 void OutputWriter::resume(double time) {
+  // The directory's snapshot numbers in order, gaps allowed (a run directory may hold only the
+  // snapshot copied in to restart from): the index keeps them up to the first written after
+  // `time`, and numbering continues after the last kept, so no kept snapshot is overwritten.
+  std::vector<std::size_t> numbers;
+  for (const auto& entry : fs::directory_iterator(m_directory)) {
+    const std::string name = entry.path().filename().string();
+    std::size_t n = 0;
+    int consumed = 0;
+    if (std::sscanf(name.c_str(), "snapshot_%6zu.h5%n", &n, &consumed) == 1 &&
+        static_cast<std::size_t>(consumed) == name.size() && name.size() == 18)
+      numbers.push_back(n);
+  }
+  std::sort(numbers.begin(), numbers.end());
   m_index.clear();
-  for (std::size_t n = 0;; ++n) {
-    char name[64];
-    std::snprintf(name, sizeof name, "snapshot_%06zu.h5", n);
-    const fs::path path = fs::path(m_directory) / name;
-    if (!fs::exists(path)) break;
-    const double t = io::snapshot_time(path.string());
+  m_next_number = 0;
+  for (const std::size_t n : numbers) {
+    const std::string name = snapshot_name(n);
+    const double t = io::snapshot_time((fs::path(m_directory) / name).string());
     if (t > time * (1 + 1e-12) + 1e-300) break;
     m_index.push_back({name, t});
+    m_next_number = n + 1;
   }
   m_next_time = 0.0;
   while (m_next_time <= time * (1 + 1e-12)) m_next_time += m_interval;
@@ -72,8 +93,7 @@ void OutputWriter::resume(double time) {
 
 std::string OutputWriter::write(const FlowState& state, double time, long step, double dt,
                                 double dt_next) {
-  char name[64];
-  std::snprintf(name, sizeof name, "snapshot_%06zu.h5", m_index.size());
+  const std::string name = snapshot_name(m_next_number++);
   const std::string path = (fs::path(m_directory) / name).string();
   io::write_snapshot(path, m_domain.layout, m_domain.flags, state.views(),
                      {time, step, dt, m_title, dt_next});

@@ -28,7 +28,8 @@ class OutputWriter {
   // Collective: the state of a failed step, as diagnostic.h5 (not in the index); returns its path.
   std::string write_diagnostic(const FlowState& state, double time, long step, double dt);
   // For a restart at `time`: keeps the directory's snapshots up to that time in the index (later
-  // ones will be overwritten) and schedules the next snapshot after it. Collective.
+  // ones will be overwritten), numbers the next one after the last kept (gaps allowed) and
+  // schedules it after `time`. Collective.
   void resume(double time);
   const std::string& directory() const { return m_directory; }
 
@@ -39,6 +40,7 @@ class OutputWriter {
   double m_interval;
   double m_next_time = 0.0;
   std::vector<io::IndexedSnapshot> m_index;
+  std::size_t m_next_number = 0;  // of the next snapshot file
 };
 
 }  // namespace bagnold::run

@@ -4,7 +4,7 @@
 //     (models/stress/), given ε_s and the strain-rate invariants of the solids velocity
 //     (solver/strain_rate.*). Evaluated over every local fluid cell (the halo included, since
 //     the strain rate is exchanged), so the momentum stencils need no further exchange.
-// With numerics.pressure_rate_relaxation_time τ_P > 0, P_s and dP_s/dε_s come from a second
+// With numerics.pressure_shear_rate_relaxation_time τ_P > 0, P_s and dP_s/dε_s come from a second
 // evaluation at γ̇_P, the strain rate relaxed in time: implicit Euler of dγ̇_P/dt = (γ̇ − γ̇_P)/τ_P
 // per cell, from the step's old γ̇_P (γ̇_P = γ̇ where old has none: a fresh start, or a restart
 // from a snapshot written before the field existed). μ_s and Θ keep the current rate.
@@ -26,7 +26,7 @@ void FlowSolver::evaluate_solids_stress(run::FlowState& state, const run::FlowSt
   if (!m_stress) return;
 
   compute_strain_rate(m_domain, state.solids_velocity, m_strain_rate, m_divergence, m_no_slip_strain_regions);
-  const double relaxation_time = m_deck.numerics.pressure_rate_relaxation_time;
+  const double relaxation_time = m_deck.numerics.pressure_shear_rate_relaxation_time;
   const double weight = relaxation_time > 0.0 ? dt / relaxation_time : 0.0;
   std::vector<int> cells;
   std::vector<double> fraction, rate, pressure_rate, divergence;

@@ -82,7 +82,14 @@ int run_command(const DeckArguments& args) {
       say(fmt::format("restart from {} at t = {:.6g} s, step {}", start.snapshot, start.time, start.step));
     }
     run::OutputWriter output(deck, domain);
-    if (!start.snapshot.empty()) output.resume(start.time);
+    if (!start.snapshot.empty()) {
+      try {
+        output.resume(start.time);
+      } catch (const io::Hdf5Error& e) {
+        say(std::string("bagnold run: cannot restart: ") + e.what(), true);
+        return bad_input;
+      }
+    }
     io::Monitor monitor(output.directory() + "/monitor.csv", run::monitor_columns(domain.regions),
                         comm.is_root(), start.snapshot.empty() ? nullptr : &start.time);
     solver::PetscSession petsc(nullptr, nullptr);

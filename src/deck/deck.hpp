@@ -117,7 +117,7 @@ struct Numerics {
   double relax_velocity = 0.7;           // α_u
   bool wall_shear_in_strain_rate = false;  // no-slip walls' shear in the wall cells' γ̇
   double solids_bulk_viscosity_ratio = 0.0;  // λ_s = r μ_s added to the solids stress
-  double pressure_rate_relaxation_time = 0.0;  // τ_P [s]: P_s sees the shear rate relaxed over τ_P
+  double pressure_shear_rate_relaxation_time = 0.0;  // τ_P [s]: P_s at γ̇ relaxed over τ_P
   double relax_pressure = 1.0;           // α_p (SIMPLE needs about 0.3)
   std::string pressure_preconditioner = "hypre";  // hypre | gamg
   double pressure_tolerance = 1e-4;      // relative, per outer iteration

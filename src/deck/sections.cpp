@@ -247,13 +247,15 @@ const Section<Numerics>& numerics_section() {
           .doc("r: the solids stress gains a bulk viscosity λ_s = r μ_s (σ = P_s I − 2 μ_s S − "
                "λ_s ∇·u I), which dissipates the work a rate-dependent P_s does on expansion. 0: "
                "none (the closures' own λ_s is not used)."),
-      key(&Numerics::pressure_rate_relaxation_time, "pressure_rate_relaxation_time").unit("s")
-          .init(0.0).within(0.0, 1e3)
+      key(&Numerics::pressure_shear_rate_relaxation_time, "pressure_shear_rate_relaxation_time")
+          .unit("s").init(0.0).within(0.0, 1e3)
           .doc("τ_P: the closure's P_s and dP_s/dε_s are evaluated at a shear rate γ̇_P that "
                "relaxes towards the current one over τ_P in each cell (dγ̇_P/dt = (γ̇ − γ̇_P)/τ_P, "
-               "implicit Euler, not advected; μ_s keeps the current rate). Steady states are "
-               "unchanged; it stops a rate-dependent P_s from following creep and bursts "
-               "instantly in jammed zones (cases/chute/README.md). 0: P_s at the current rate."),
+               "implicit Euler, not advected; μ_s and Θ keep the current rate). The steady-state "
+               "equations are unchanged (γ̇_P = γ̇); which steady state a run reaches, and whether "
+               "it holds, can depend on τ_P. It stops a rate-dependent P_s from following creep and "
+               "bursts instantly in jammed zones (cases/chute/README.md). 0: P_s at the current "
+               "rate."),
       key(&Numerics::relax_pressure, "relax_pressure").unit("-").init(1.0).within(0.01, 1.0)
           .doc("Under-relaxation of the pressure correction, α_p."),
       key(&Numerics::pressure_preconditioner, "pressure_preconditioner").init("hypre")

@@ -193,6 +193,19 @@ double snapshot_time(const std::string& path) {
   return read_double_attribute(file.get(), "time");
 }
 
+std::vector<std::string> absent_fields(const std::string& path,
+                                       const std::vector<std::string>& names) {
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  File file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT));
+  if (file.get() < 0) throw Hdf5Error("cannot open snapshot " + path);
+  const bool has_group = H5Lexists(file.get(), "fields", H5P_DEFAULT) > 0;
+  std::vector<std::string> absent;
+  for (const auto& name : names)
+    if (!has_group || H5Lexists(file.get(), ("fields/" + name).c_str(), H5P_DEFAULT) <= 0)
+      absent.push_back(name);
+  return absent;
+}
+
 const char* centering_name(Centering c) {
   switch (c) {
     case Centering::cell: return "cell";

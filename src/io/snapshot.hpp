@@ -42,6 +42,9 @@ struct SnapshotInfo {
 
 // The time [s] a snapshot was written at (rank-local, serial read); throws when unreadable.
 double snapshot_time(const std::string& path);
+// Of `names`, those the snapshot has no /fields dataset for (rank-local, serial read).
+std::vector<std::string> absent_fields(const std::string& path,
+                                       const std::vector<std::string>& names);
 
 // Collective: every rank calls with the same field names in the same order.
 void write_snapshot(const std::string& path, const parallel::Layout& layout,

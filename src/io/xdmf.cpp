@@ -1,5 +1,6 @@
 #include "src/io/xdmf.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -35,7 +36,9 @@ std::string xdmf_text(const grid::StructuredGrid& grid, const std::vector<Indexe
         << path << "</DataItem>\n    </Attribute>\n";
     };
     attribute("cell_flags", "/grid/cell_flags", "UChar", 1);
-    for (const auto& name : field_names) attribute(name, "/fields/" + name, "Float", 8);
+    for (const auto& name : field_names)
+      if (std::find(snap.absent_fields.begin(), snap.absent_fields.end(), name) == snap.absent_fields.end())
+        attribute(name, "/fields/" + name, "Float", 8);
     s << "   </Grid>\n";
   }
   s << "  </Grid>\n </Domain>\n</Xdmf>\n";

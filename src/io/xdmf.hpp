@@ -13,10 +13,12 @@ namespace bagnold::io {
 struct IndexedSnapshot {
   std::string file;  // relative to the index's directory
   double time = 0.0;
+  std::vector<std::string> absent_fields;  // of the run's fields, those this file lacks (older)
 };
 
 // XDMF text for the snapshots; fields are cell-centred attributes on a 3-D rectilinear mesh
 // (face fields are shown on their owning cell; the HDF5 attribute `centering` says which face).
+// A snapshot's absent_fields are left out of its entry.
 std::string xdmf_text(const grid::StructuredGrid& grid, const std::vector<IndexedSnapshot>& snapshots,
                       const std::vector<std::string>& field_names);
 

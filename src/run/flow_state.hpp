@@ -21,7 +21,7 @@ struct FlowState {
   std::vector<double> solids_pressure;          // P_s [Pa]
   std::vector<double> granular_temperature;     // Θ [m²/s²]
   // γ̇_P [1/s]: the strain rate sqrt(2 D:D) the closure's P_s was evaluated at (the current one,
-  // or relaxed towards it over numerics.pressure_rate_relaxation_time). NaN: not yet evaluated.
+  // or relaxed towards it over numerics.pressure_shear_rate_relaxation_time). NaN: not yet evaluated.
   std::vector<double> pressure_shear_rate;
   std::array<std::vector<double>, 3> gas_velocity;     // U_g, V_g, W_g [m/s] on +x, +y, +z faces
   std::array<std::vector<double>, 3> solids_velocity;  // U_s, V_s, W_s [m/s]

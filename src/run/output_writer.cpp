@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 
 namespace bagnold::run {
 
@@ -15,6 +16,26 @@ std::string snapshot_name(std::size_t number) {
   char name[64];
   std::snprintf(name, sizeof name, "snapshot_%06zu.h5", number);
   return name;
+}
+
+// The number of a snapshot file written by OutputWriter::write (snapshot_%06zu.h5), or nothing
+// for any other name (temporary files, other digit forms).
+std::optional<std::size_t> snapshot_number(const std::string& name) {
+  std::size_t n = 0;
+  int consumed = 0;
+  if (std::sscanf(name.c_str(), "snapshot_%zu.h5%n", &n, &consumed) != 1 ||
+      static_cast<std::size_t>(consumed) != name.size() || snapshot_name(n) != name)
+    return std::nullopt;
+  return n;
+}
+
+// The directory's snapshot files, ordered by number.
+std::vector<std::size_t> snapshot_numbers(const std::string& directory) {
+  std::vector<std::size_t> numbers;
+  for (const auto& entry : fs::directory_iterator(directory))
+    if (const auto n = snapshot_number(entry.path().filename().string())) numbers.push_back(*n);
+  std::sort(numbers.begin(), numbers.end());
+  return numbers;
 }
 }  // namespace
 
@@ -44,16 +65,12 @@ OutputWriter::OutputWriter(const deck::Deck& deck, const parallel::Domain& domai
   if (failed) throw io::Hdf5Error(problem.empty() ? "cannot write to the output directory '" + m_directory + "'" : problem);
 }
 
+
 std::string find_snapshot(const std::string& file_or_directory) {
   if (!fs::is_directory(file_or_directory)) return file_or_directory;
-  std::string last;
-  for (const auto& entry : fs::directory_iterator(file_or_directory)) {
-    const std::string name = entry.path().filename().string();
-    if (name.rfind("snapshot_", 0) == 0 && entry.path().extension() == ".h5" && name > fs::path(last).filename().string())
-      last = entry.path().string();
-  }
-  if (last.empty()) throw io::Hdf5Error("no snapshot in " + file_or_directory);
-  return last;
+  const auto numbers = snapshot_numbers(file_or_directory);
+  if (numbers.empty()) throw io::Hdf5Error("no snapshot in " + file_or_directory);
+  return (fs::path(file_or_directory) / snapshot_name(numbers.back())).string();
 }
 
 std::string OutputWriter::write_diagnostic(const FlowState& state, double time, long step,
@@ -65,28 +82,34 @@ std::string OutputWriter::write_diagnostic(const FlowState& state, double time, 
 }
 
 void OutputWriter::resume(double time) {
-  // The directory's snapshot numbers in order, gaps allowed (a run directory may hold only the
+  // The directory's snapshots in number order, gaps allowed (a run directory may hold only the
   // snapshot copied in to restart from): the index keeps them up to the first written after
   // `time`, and numbering continues after the last kept, so no kept snapshot is overwritten.
-  std::vector<std::size_t> numbers;
-  for (const auto& entry : fs::directory_iterator(m_directory)) {
-    const std::string name = entry.path().filename().string();
-    std::size_t n = 0;
-    int consumed = 0;
-    if (std::sscanf(name.c_str(), "snapshot_%6zu.h5%n", &n, &consumed) == 1 &&
-        static_cast<std::size_t>(consumed) == name.size() && name.size() == 18)
-      numbers.push_back(n);
-  }
-  std::sort(numbers.begin(), numbers.end());
+  // Every rank reads the directory; all stop together if one cannot, or if they disagree.
+  const auto& comm = m_domain.layout.comm();
+  const auto fields = FlowState::field_names();
+  std::string problem;
   m_index.clear();
   m_next_number = 0;
-  for (const std::size_t n : numbers) {
-    const std::string name = snapshot_name(n);
-    const double t = io::snapshot_time((fs::path(m_directory) / name).string());
-    if (t > time * (1 + 1e-12) + 1e-300) break;
-    m_index.push_back({name, t});
-    m_next_number = n + 1;
+  try {
+    for (const std::size_t n : snapshot_numbers(m_directory)) {
+      const std::string name = snapshot_name(n);
+      const std::string path = (fs::path(m_directory) / name).string();
+      const double t = io::snapshot_time(path);
+      if (t > time * (1 + 1e-12) + 1e-300) break;
+      m_index.push_back({name, t, io::absent_fields(path, fields)});
+      m_next_number = n + 1;
+    }
+  } catch (const std::exception& e) {  // io::Hdf5Error, or the file system's
+    problem = e.what();
   }
+  if (comm.max(std::int64_t{problem.empty() ? 0 : 1}))
+    throw io::Hdf5Error(problem.empty() ? "another rank could not read the snapshots in " + m_directory
+                                        : problem);
+  const auto next = static_cast<std::int64_t>(m_next_number);
+  if (comm.min(next) != comm.max(next))
+    throw io::Hdf5Error("the ranks see different snapshots in " + m_directory +
+                        " (is the output directory on a shared file system?)");
   m_next_time = 0.0;
   while (m_next_time <= time * (1 + 1e-12)) m_next_time += m_interval;
 }
@@ -97,7 +120,7 @@ std::string OutputWriter::write(const FlowState& state, double time, long step, 
   const std::string path = (fs::path(m_directory) / name).string();
   io::write_snapshot(path, m_domain.layout, m_domain.flags, state.views(),
                      {time, step, dt, m_title, dt_next});
-  m_index.push_back({name, time});
+  m_index.push_back({name, time, {}});
   if (m_domain.layout.comm().is_root())
     io::write_file_atomically((fs::path(m_directory) / "run.xmf").string(),
                               io::xdmf_text(m_domain.grid, m_index, FlowState::field_names()));

@@ -64,7 +64,13 @@ void FlowSolver::predict_momentum(int d, run::FlowState& state, const run::FlowS
   const double least_speed = 1e-3 * m_reference_speed;
   std::array<MomentumResidual, 2> residual;
   for (const Phase phase : {gas, solids})
-    residual[phase] = MomentumResidual(m_residual_normalization, mean[phase], m_velocity_scale, least_speed);
+    residual[phase] = MomentumResidual(m_residual_normalization, mean[phase], m_velocity_scale,
+                                       least_speed, m_deck.numerics.net_force_residual);
+  const auto& gravity = m_deck.physics.gravity;
+  const double g_magnitude = std::sqrt(gravity[0] * gravity[0] + gravity[1] * gravity[1] + gravity[2] * gravity[2]);
+  auto weight = [&](Phase phase, const MomentumRow& row) {
+    return row.fraction * density(phase) * row.volume * g_magnitude;
+  };
   std::array<std::vector<double>, 2> x;
   for (auto& v : x) v.resize(numbering.owned_locals.size());
   for (const int e : {gas_momentum_x + d, solids_momentum_x + d}) {
@@ -87,7 +93,7 @@ void FlowSolver::predict_momentum(int d, run::FlowState& state, const run::FlowS
     if (g) {
       const double row_residual = residual[gas].add(A_g, A_g * u_g[ul] - g->neighbours_u,
                                                     A_g - g->neighbours_a, g->b + beta_v * u_s[ul],
-                                                    g->transient);
+                                                    g->transient, weight(gas, *g));
       record_worst(gas_momentum_x + d, row_residual, l);
       double diagonal = A_g, rhs = g->b;
       if (s) {
@@ -113,7 +119,7 @@ void FlowSolver::predict_momentum(int d, run::FlowState& state, const run::FlowS
       if (s) {
         const double row_residual = residual[solids].add(A_s, A_s * u_s[ul] - s->neighbours_u,
                                                          A_s - s->neighbours_a, s->b + beta_v * u_g[ul],
-                                                         s->transient);
+                                                         s->transient, weight(solids, *s));
         record_worst(solids_momentum_x + d, row_residual, l);
         diagonal = A_s;
         rhs = s->b;

@@ -110,6 +110,7 @@ struct Numerics {
   std::string convection = "superbee";   // upwind | superbee | muscl | van_leer | minmod
   double tolerance = 1e-4;               // normalized residual for convergence of a step
   std::string residual_normalization = "velocity-scale";  // velocity-scale | deviation
+  bool net_force_residual = false;  // also |Σ row residuals| / the phase's weight
   int max_outer_iterations = 40;         // before the step is redone with dt / 2
   int easy_outer_iterations = 8;         // at or below: the next step grows
   int hard_outer_iterations = 0;         // above (if > 0): the next step shrinks

@@ -224,6 +224,12 @@ const Section<Numerics>& numerics_section() {
                "Σ(|Lu − L1 ū| + |s − L1 ū|), the forces that do not cancel for a uniform field "
                "(OpenFOAM's): the latter lets no large viscosity hide an unbalanced force "
                "(the chute), at 1.6x the 10 mm bin's steps."),
+      key(&Numerics::net_force_residual, "net_force_residual").init(false)
+          .doc("Whether each momentum residual must also have a small net: |Σ (s − L u)| over the "
+               "phase's rows, against the phase's weight Σ ε ρ V |g|, below the tolerance. The "
+               "row residuals' sum is the force the iterate leaves unbalanced on the whole phase; "
+               "a sum of magnitudes can hide it (the free-slip chute at small dt, "
+               "cases/chute/README.md). No effect without gravity."),
       key(&Numerics::max_outer_iterations, "max_outer_iterations").init(40).within(1, 1000)
           .doc("SIMPLE outer iterations before the step is redone with dt / 2."),
       key(&Numerics::easy_outer_iterations, "easy_outer_iterations").init(8).within(1, 1000)

@@ -28,7 +28,6 @@ namespace bagnold::solver {
 enum class ResidualNormalization { deviation, velocity_scale };
 ResidualNormalization residual_normalization_from_name(const std::string& name);
 
-//
 // With numerics.net_force_residual the value is at least |Σ (s − L u)| / Σ ε ρ V |g|: the force
 // the iterate leaves unbalanced on the whole phase, against its weight. Exchange between rows
 // cancels in that sum, so it is what a sum of magnitudes can hide: at small dt the deviation

@@ -67,7 +67,8 @@ FlowSolver::FlowSolver(const deck::Deck& deck, const parallel::Domain& domain)
     extent = std::max(extent, domain.grid.axis(d).faces().back() - domain.grid.axis(d).faces().front());
     gravity += deck.physics.gravity[static_cast<std::size_t>(d)] * deck.physics.gravity[static_cast<std::size_t>(d)];
   }
-  m_reference_speed = std::sqrt(std::sqrt(gravity) * extent);
+  m_gravity = std::sqrt(gravity);
+  m_reference_speed = std::sqrt(m_gravity * extent);
   for (const auto& region : domain.regions.regions)
     for (int d = 0; d < 3; ++d)
       m_reference_speed = std::max({m_reference_speed, std::abs(region.wall_velocity[static_cast<std::size_t>(d)]),

@@ -191,6 +191,7 @@ class FlowSolver {
   std::vector<double> m_strain_rate, m_divergence; // scratch for the closure
   std::vector<bool> m_no_slip_strain_regions;      // per region: its wall shear enters γ̇
   double m_reference_speed = 1.0;  // [m/s]
+  double m_gravity = 0.0;          // |g| [m/s²]
   double m_velocity_scale = 1.0;   // residual_velocity_scale of the iterate, at most 10× the step start's
   double m_reference_area = 0.0;   // Σ_cells ½ Σ_faces A [m²]
 };

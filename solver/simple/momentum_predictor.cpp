@@ -66,10 +66,8 @@ void FlowSolver::predict_momentum(int d, run::FlowState& state, const run::FlowS
   for (const Phase phase : {gas, solids})
     residual[phase] = MomentumResidual(m_residual_normalization, mean[phase], m_velocity_scale,
                                        least_speed, m_deck.numerics.net_force_residual);
-  const auto& gravity = m_deck.physics.gravity;
-  const double g_magnitude = std::sqrt(gravity[0] * gravity[0] + gravity[1] * gravity[1] + gravity[2] * gravity[2]);
   auto weight = [&](Phase phase, const MomentumRow& row) {
-    return row.fraction * density(phase) * row.volume * g_magnitude;
+    return row.fraction * density(phase) * row.volume * m_gravity;
   };
   std::array<std::vector<double>, 2> x;
   for (auto& v : x) v.resize(numbering.owned_locals.size());

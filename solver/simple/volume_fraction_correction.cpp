@@ -128,12 +128,10 @@ void FlowSolver::limit_compression(const run::FlowState& state, std::vector<doub
   if (cells.empty()) return;
   // The pressure scale below which the linearization need not be trusted: the weight of one
   // cell of packed solids (ρ_s |g| h ε_s, h the smallest cell width, ε_s = 0.6).
-  double gravity = 0.0, h = INFINITY;
-  for (int d = 0; d < 3; ++d) {
-    gravity += m_deck.physics.gravity[static_cast<std::size_t>(d)] * m_deck.physics.gravity[static_cast<std::size_t>(d)];
+  double h = INFINITY;
+  for (int d = 0; d < 3; ++d)
     for (int l = 0; l < layout.owned_fluid_count(); ++l) h = std::min(h, width(l, d));
-  }
-  const double floor = std::max(m_deck.solids.material.density * std::sqrt(gravity) * h * 0.6, 1.0);
+  const double floor = std::max(m_deck.solids.material.density * m_gravity * h * 0.6, 1.0);
   const std::size_t n = cells.size();
   std::vector<double> lambda(n, 1.0), candidate(n), rate(n), divergence(n);
   std::vector<double> pressure(n), derivative(n), shear(n), bulk(n), temperature(n);

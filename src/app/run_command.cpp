@@ -39,7 +39,7 @@ StartPoint restore_state(const std::string& file_or_directory, const parallel::D
   std::vector<std::vector<double>> fields;
   const auto contents =
       io::read_snapshot(start.snapshot, domain.layout, run::FlowState::field_names(), fields,
-                        {"pressure_shear_rate"});
+                        run::FlowState::optional_field_names());
   const auto targets = state.fields();
   for (std::size_t f = 0; f < targets.size(); ++f) *targets[f] = std::move(fields[f]);
   start.time = contents.info.time;

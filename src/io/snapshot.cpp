@@ -184,26 +184,23 @@ void write_grid(hid_t file, const parallel::Layout& layout, const grid::CellFlag
   }
 }
 
-}  // namespace
-
-double snapshot_time(const std::string& path) {
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  File file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT));
-  if (file.get() < 0) throw Hdf5Error("cannot open snapshot " + path);
-  return read_double_attribute(file.get(), "time");
+// Whether the open snapshot has the dataset /fields/NAME.
+bool has_field(hid_t file, const std::string& name) {
+  return H5Lexists(file, "fields", H5P_DEFAULT) > 0 &&
+         H5Lexists(file, ("fields/" + name).c_str(), H5P_DEFAULT) > 0;
 }
 
-std::vector<std::string> absent_fields(const std::string& path,
-                                       const std::vector<std::string>& names) {
+}  // namespace
+
+SnapshotHeader read_snapshot_header(const std::string& path, const std::vector<std::string>& names) {
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
   File file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT));
   if (file.get() < 0) throw Hdf5Error("cannot open snapshot " + path);
-  const bool has_group = H5Lexists(file.get(), "fields", H5P_DEFAULT) > 0;
-  std::vector<std::string> absent;
+  SnapshotHeader header;
+  header.time = read_double_attribute(file.get(), "time");
   for (const auto& name : names)
-    if (!has_group || H5Lexists(file.get(), ("fields/" + name).c_str(), H5P_DEFAULT) <= 0)
-      absent.push_back(name);
-  return absent;
+    if (!has_field(file.get(), name)) header.absent_fields.push_back(name);
+  return header;
 }
 
 const char* centering_name(Centering c) {
@@ -336,8 +333,7 @@ SnapshotContents read_snapshot(const std::string& path, const parallel::Layout& 
   std::vector<double> buffer;
   for (std::size_t f = 0; f < names.size(); ++f) {
     const std::string field_path = "fields/" + names[f];
-    if (H5Lexists(file.get(), "fields", H5P_DEFAULT) <= 0 ||
-        H5Lexists(file.get(), field_path.c_str(), H5P_DEFAULT) <= 0) {
+    if (!has_field(file.get(), names[f])) {
       if (std::find(optional.begin(), optional.end(), names[f]) == optional.end())
         throw Hdf5Error("snapshot " + path + " has no field '" + names[f] + "'");
       std::fill(fields[f].begin(), fields[f].end(), std::nan(""));

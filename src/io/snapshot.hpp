@@ -40,11 +40,13 @@ struct SnapshotInfo {
   double dt_next = 0.0;  // [s] the step the time loop would take next (exact restart)
 };
 
-// The time [s] a snapshot was written at (rank-local, serial read); throws when unreadable.
-double snapshot_time(const std::string& path);
-// Of `names`, those the snapshot has no /fields dataset for (rank-local, serial read).
-std::vector<std::string> absent_fields(const std::string& path,
-                                       const std::vector<std::string>& names);
+struct SnapshotHeader {
+  double time = 0.0;                       // [s] when the snapshot was written
+  std::vector<std::string> absent_fields;  // of the names asked about, those it has no field for
+};
+// A snapshot's time and which of `names` it lacks (rank-local, serial read); throws when
+// unreadable.
+SnapshotHeader read_snapshot_header(const std::string& path, const std::vector<std::string>& names);
 
 // Collective: every rank calls with the same field names in the same order.
 void write_snapshot(const std::string& path, const parallel::Layout& layout,

@@ -32,6 +32,9 @@ struct FlowState {
   std::vector<std::vector<double>*> fields();
   std::vector<const std::vector<double>*> fields() const;
   static std::vector<std::string> field_names();
+  // Of those, the ones a snapshot may lack (added after format_version 1 was fixed): a restart
+  // leaves them unset (NaN).
+  static std::vector<std::string> optional_field_names() { return {"pressure_shear_rate"}; }
 };
 
 }  // namespace bagnold::run

@@ -95,9 +95,9 @@ void OutputWriter::resume(double time) {
     for (const std::size_t n : snapshot_numbers(m_directory)) {
       const std::string name = snapshot_name(n);
       const std::string path = (fs::path(m_directory) / name).string();
-      const double t = io::snapshot_time(path);
-      if (t > time * (1 + 1e-12) + 1e-300) break;
-      m_index.push_back({name, t, io::absent_fields(path, fields)});
+      auto header = io::read_snapshot_header(path, fields);
+      if (header.time > time * (1 + 1e-12) + 1e-300) break;
+      m_index.push_back({name, header.time, std::move(header.absent_fields)});
       m_next_number = n + 1;
     }
   } catch (const std::exception& e) {  // io::Hdf5Error, or the file system's

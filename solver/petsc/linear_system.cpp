@@ -107,6 +107,7 @@ SolveReport LinearSystem::solve(std::vector<double>& x) {
   petsc_check(KSPGetResidualNorm(m_ksp.get(), &report.residual_norm), "KSPGetResidualNorm");
   report.iterations = static_cast<int>(iterations);
   report.converged = reason > 0;
+  report.reason = KSPConvergedReasons[reason];
   const PetscScalar* solved = nullptr;
   petsc_check(VecGetArrayRead(m_solution.get(), &solved), "VecGetArrayRead");
   std::copy(solved, solved + m_rows, x.begin());

@@ -26,6 +26,7 @@ struct SolveReport {
   int iterations = 0;
   bool converged = false;
   double residual_norm = 0.0;
+  std::string reason;  // PETSc's KSPConvergedReason, as text
 };
 
 class LinearSystem {

@@ -1,51 +1,91 @@
 // One implicit-Euler time step: outer iterations (closures, momentum predictors, pressure
 // correction, solids volume fraction correction) until every normalized residual is below
-// numerics.tolerance, or numerics.max_outer_iterations.
+// numerics.tolerance, or numerics.max_outer_iterations, or a linear solve fails.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 
+#include "solver/petsc/log_stage.hpp"
+#include "solver/simple/face_fractions.hpp"
 #include "solver/simple/flow_solver.hpp"
+#include "solver/simple/solids_conservation.hpp"
 
 namespace bagnold::solver {
+
+bool FlowSolver::iterate(run::FlowState& state, const run::FlowState& old, double dt, bool first,
+                         double velocity_scale, IterationSums& sums, StepResult& result) {
+  const Discretization& disc = m_discretization;
+  IterationFields& f = m_fields;
+  {
+    const ScopedStage stage(Stage::closures);
+    m_closures.evaluate(disc, state, old, dt, f.closures);
+  }
+  carry_all_fractions(disc, state, f.carried);
+  {
+    const ScopedStage stage(Stage::momentum);
+    const MomentumPredictor::Inputs inputs{old, dt, f.closures, f.carried, velocity_scale, first};
+    for (int d = 0; d < 3; ++d) {
+      if (!m_predictor.predict(d, inputs, state, f.response, sums, m_worst, result)) return false;
+      for (const Phase phase : {gas, solids}) carry_fractions(disc, state, phase, d, f.carried);
+    }
+  }
+  if (m_pressure) {
+    const ScopedStage stage(Stage::pressure);
+    if (!m_pressure->correct(f.response, f.carried, state, sums, m_worst, result)) return false;
+    carry_all_fractions(disc, state, f.carried);
+  }
+  if (m_fraction) {
+    const ScopedStage stage(Stage::fraction);
+    if (!m_fraction->correct(old, dt, f.closures, f.response, f.carried, state, sums, m_worst, result))
+      return false;
+  }
+  return true;
+}
 
 StepResult FlowSolver::advance(run::FlowState& state, const run::FlowState& old, double dt) {
   StepResult result;
   apply_boundary_values(state);
   // BAGNOLD_TRACE=1: every outer iteration's residuals and the cell of the largest, on stderr.
   const bool trace = std::getenv("BAGNOLD_TRACE") != nullptr;
-  const bool root = m_domain.layout.comm().is_root();
-  // The residuals' velocity scale may follow the iterate up to 10× the step's start, no further:
-  // an iterate that blows up must not make its own residuals look small and be accepted.
-  const double largest_scale = 10.0 * residual_velocity_scale(old);
-  for (int iteration = 1; iteration <= m_deck.numerics.max_outer_iterations; ++iteration) {
-    m_outer_iteration = iteration;
-    // The multigrid hierarchy of the pressure correction is built once per step and reused by
-    // the later outer iterations (the matrix changes only through d); it dominated the run time.
-    if (m_pressure_system) m_pressure_system->reuse_preconditioner(iteration > 1);
-    m_velocity_scale = std::min(residual_velocity_scale(state), largest_scale);
-    evaluate_drag(state);
-    evaluate_solids_stress(state, old, dt);
-    result.residuals = Residuals{};
-    for (int d = 0; d < 3; ++d) predict_momentum(d, state, old, dt, result.residuals);
-    if (m_moves[gas]) result.residuals.value[mixture_continuity] = correct_pressure(state);
-    if (m_moves[solids])
-      result.residuals.value[solids_continuity] = correct_volume_fraction(state, old, dt);
+  const auto& comm = m_discretization.layout().comm();
+  const double largest_scale = 10.0 * residual_velocity_scale(old, INFINITY, nullptr);
+  if (m_pressure) m_pressure->start_step();
+  for (int iteration = 1; iteration <= m_settings.max_outer_iterations; ++iteration) {
+    IterationSums sums;
+    const double velocity_scale = residual_velocity_scale(state, largest_scale, &sums);
     result.iterations = iteration;
+    if (!iterate(state, old, dt, iteration == 1, velocity_scale, sums, result)) return result;
+    sums.reduce(comm);
+    for (int e = 0; e < 6; ++e)
+      result.residuals.value[static_cast<std::size_t>(e)] =
+          sums.normalization[static_cast<std::size_t>(e)].value(sums.momentum[static_cast<std::size_t>(e)]);
+    // A flow at rest has no throughput: measure against the flux the velocity scale would carry.
+    const double least_throughput = m_discretization.reference_area() * velocity_scale;
+    for (int c = 0; c < 2; ++c) {
+      const auto& [imbalance, throughput] = sums.continuity[static_cast<std::size_t>(c)];
+      const bool solved = c == 0 ? m_pressure != nullptr : m_fraction != nullptr;
+      result.residuals.value[static_cast<std::size_t>(mixture_continuity + c)] =
+          !solved || imbalance <= 1e-300 ? 0.0 : imbalance / std::max(throughput, least_throughput);
+    }
+    for (int i = 0; i < intervention_count; ++i)
+      result.interventions[static_cast<std::size_t>(i)] += sums.interventions[static_cast<std::size_t>(i)];
     const double largest = result.residuals.largest();
     if (trace) {
       const auto where = worst_cell(result.residuals.worst());  // collective
-      if (root) {
+      if (comm.is_root()) {
         std::fprintf(stderr, "  it %d:", iteration);
         for (const double r : result.residuals.value) std::fprintf(stderr, " %.3e", r);
-        std::fprintf(stderr, "  worst at (%d, %d, %d)\n", where.cell[0], where.cell[1],
-                     where.cell[2]);
+        std::fprintf(stderr, "  worst at (%d, %d, %d)\n", where.cell[0], where.cell[1], where.cell[2]);
       }
     }
     if (!std::isfinite(largest)) return result;  // diverged: the caller backs off
-    if (largest < m_deck.numerics.tolerance) {
-      if (m_moves[solids]) conserve_solids(state, old, dt);
+    if (largest < m_settings.tolerance) {
+      if (m_fraction) {
+        for (int d = 0; d < 3; ++d) carry_fractions(m_discretization, state, solids, d, m_fields.carried);
+        m_stepped_solids_flux = conserve_solids(m_discretization, m_fields.carried,
+                                                m_settings.density[solids], old, dt, state);
+      }
       result.converged = true;
       return result;
     }

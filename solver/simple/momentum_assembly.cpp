@@ -5,11 +5,11 @@
 // and c's + neighbour n), and each of its six faces:
 //   F   outward mass flux ρ_m ε_m u A through the face, from the current iterate: the mean of
 //       the continuity fluxes of the two cell faces it spans (ε_m carried: the gas's linear
-//       face value, the solids' upwind value, flux_fraction);
+//       face value, the solids' upwind value: CarriedFractions);
 //   D   μ_eff A / δ, with δ the distance to the neighbour (half a cell to a wall), μ_eff the
 //       phase's effective viscosity (ε_g μ_g, or the closure's μ_s) averaged over the cells
 //       around the face; at a solids wall with a partial-slip law (boundary.solids_wall),
-//       c_w A instead, with c_w ≤ μ_s/δ from the wall law (solids_wall.cpp);
+//       c_w A instead, with c_w ≤ μ_s/δ from the wall law (solids_wall.hpp);
 //   a_nb = D + max(−F, 0),  a_P += a_nb       (first-order upwind, implicit, non-conservative
 //       form: the continuity imbalance is subtracted, so a_P = Σ a_nb + transient and the
 //       rows stay diagonally dominant while ε_m is still changing within the step);
@@ -21,23 +21,27 @@
 #include <algorithm>
 #include <cmath>
 
-#include "solver/simple/flow_solver.hpp"
+#include "solver/simple/face_fractions.hpp"
+#include "solver/simple/momentum_rows.hpp"
 
 namespace bagnold::solver {
 
-void FlowSolver::assemble_momentum(Phase phase, int d, const run::FlowState& state,
-                                   const run::FlowState& old, double dt,
-                                   std::vector<MomentumRow>& rows) {
-  const auto& layout = m_domain.layout;
+void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d,
+                            const run::FlowState& state, SolidsWallCoefficients* walls,
+                            bool refresh_wall_coefficients, std::vector<MomentumRow>& rows) {
+  const Discretization& disc = in.discretization;
+  const auto& layout = disc.layout();
   const auto ud = static_cast<std::size_t>(d);
-  const double rho = density(phase);
+  const double rho = in.settings.density[phase];
+  const Limiter limiter = in.settings.limiter;
   const auto& velocity = phase == gas ? state.gas_velocity : state.solids_velocity;
   const auto& u = velocity[ud];
-  const auto& u_old = (phase == gas ? old.gas_velocity : old.solids_velocity)[ud];
-  const auto& mu = m_viscosity[phase];
-  const auto& links = faces(phase).links[ud];
-  const auto& kind = faces(phase).kind[ud];
-  const auto& numbering = *m_velocity_numbering[ud];
+  const auto& u_old = (phase == gas ? in.old.gas_velocity : in.old.solids_velocity)[ud];
+  const auto& mu = in.closures.viscosity[phase];
+  const auto& links = disc.faces(phase).links[ud];
+  const auto& kind = disc.faces(phase).kind[ud];
+  const auto& numbering = disc.velocity_numbering(d);
+  const auto& carried_d = in.carried(phase, d);
   auto at = [&](int local) { return u[static_cast<std::size_t>(local)]; };
   auto viscosity = [&](int local) { return local >= 0 ? mu[static_cast<std::size_t>(local)] : 0.0; };
 
@@ -46,11 +50,11 @@ void FlowSolver::assemble_momentum(Phase phase, int d, const run::FlowState& sta
     MomentumRow& row = rows[r];
     const int l = numbering.owned_locals[r];
     const int n = layout.neighbour(l, 2 * d + 1);
-    const double half_c = 0.5 * width(l, d), half_n = 0.5 * width(n, d);
-    row.area = face_area(l, d);
+    const double half_c = 0.5 * disc.width(l, d), half_n = 0.5 * disc.width(n, d);
+    row.area = disc.face_area(l, d);
     row.volume = (half_c + half_n) * row.area;
-    row.fraction = face_fraction(state, phase, l, d);
-    if (phase == solids && !solids_present(state, l, d)) {
+    row.fraction = face_fraction(disc, state, phase, l, d);
+    if (phase == solids && !solids_present(disc, state, l, d)) {
       // Not solved (u_s = 0): the row keeps its pattern, with zero off-diagonal entries.
       for (int face = 0; face < 6; ++face) {
         const Link& link = links[6 * static_cast<std::size_t>(l) + static_cast<std::size_t>(face)];
@@ -74,31 +78,28 @@ void FlowSolver::assemble_momentum(Phase phase, int d, const run::FlowState& sta
         // mass is: an empty cell above a bed's free surface brings the face below none.
         const bool has_far = link.kind == LinkKind::unknown || link.kind == LinkKind::fixed;
         const int centre = s > 0 ? n : l;
-        const double own = at(l) * flux_fraction(state, phase, l, d);
-        const double far = has_far ? at(link.local) * flux_fraction(state, phase, link.local, d) : own;
+        const double own = at(l) * carried_d[static_cast<std::size_t>(l)];
+        const double far = has_far ? at(link.local) * carried_d[static_cast<std::size_t>(link.local)] : own;
         flux_out = s * rho * row.area * 0.5 * (own + far);
-        diffusion = has_far ? viscosity(centre) * row.area / width(centre, d) : 0.0;
+        diffusion = has_far ? viscosity(centre) * row.area / disc.width(centre, d) : 0.0;
       } else {
         // The face between the owning cells' faces along e: half of c's and half of n's.
         const int t = 3 - d - e;
         const auto& v = velocity[static_cast<std::size_t>(e)];
+        const auto& carried_e = in.carried(phase, e);
         const int cv = s > 0 ? l : layout.neighbour(l, face);
         const int nv = s > 0 ? n : layout.neighbour(n, face);
-        const double vc = cv >= 0 ? v[static_cast<std::size_t>(cv)] * flux_fraction(state, phase, cv, e) : 0.0;
-        const double vn = nv >= 0 ? v[static_cast<std::size_t>(nv)] * flux_fraction(state, phase, nv, e) : 0.0;
-        flux_out = s * rho * (vc * half_c + vn * half_n) * width(l, t);
-        const double area = (half_c + half_n) * width(l, t);
+        const double vc = cv >= 0 ? v[static_cast<std::size_t>(cv)] * carried_e[static_cast<std::size_t>(cv)] : 0.0;
+        const double vn = nv >= 0 ? v[static_cast<std::size_t>(nv)] * carried_e[static_cast<std::size_t>(nv)] : 0.0;
+        flux_out = s * rho * (vc * half_c + vn * half_n) * disc.width(l, t);
+        const double area = (half_c + half_n) * disc.width(l, t);
         if (link.kind == LinkKind::wall) {
-          // No slip: μ A/δ. A solids partial-slip wall: c_w A, c_w ≤ μ_s/δ (solids_wall.cpp).
-          const double wall_distance = 0.5 * width(l, e);
-          if (phase == solids && m_solids_walls && m_solids_walls->partial(link.region)) {
-            // Held from the step's first outer iteration (m_wall_coefficients).
-            const std::size_t slot = 6 * static_cast<std::size_t>(l) + static_cast<std::size_t>(face);
-            double& c_w = m_wall_coefficients[ud][slot];
-            if (m_outer_iteration <= 1)
-              c_w = solids_wall_coefficient(state, link, l, d, e, wall_distance);
-            diffusion = c_w * area;
+          // No slip: μ A/δ. A solids partial-slip wall: c_w A, c_w ≤ μ_s/δ (solids_wall.hpp).
+          if (phase == solids && walls && walls->partial(link)) {
+            diffusion = walls->coefficient(disc, state, in.closures, link, l, d, face,
+                                           refresh_wall_coefficients) * area;
           } else {
+            const double wall_distance = 0.5 * disc.width(l, e);
             diffusion = 0.5 * (viscosity(l) + viscosity(n)) * area / wall_distance;
           }
         } else if (link.kind != LinkKind::zero_gradient) {
@@ -107,7 +108,7 @@ void FlowSolver::assemble_momentum(Phase phase, int d, const run::FlowState& sta
           const int m_plus = layout.neighbour(m, 2 * d + 1);
           const double edge_mu = 0.25 * (viscosity(l) + viscosity(n) + viscosity(m) +
                                          (m_plus >= 0 ? viscosity(m_plus) : viscosity(m)));
-          diffusion = edge_mu * area / (0.5 * (width(l, e) + width(m, e)));
+          diffusion = edge_mu * area / (0.5 * (disc.width(l, e) + disc.width(m, e)));
         }
       }
       switch (link.kind) {
@@ -118,7 +119,7 @@ void FlowSolver::assemble_momentum(Phase phase, int d, const run::FlowState& sta
           row.values[row.count++] = -a_nb;
           row.neighbours_u += a_nb * at(link.local);
           row.neighbours_a += a_nb;
-          if (m_limiter != Limiter::upwind) {
+          if (limiter != Limiter::upwind) {
             double upwind_upwind, upwind, downwind;
             if (flux_out > 0.0) {
               const Link& back = links[6 * static_cast<std::size_t>(l) + static_cast<std::size_t>(face ^ 1)];
@@ -133,7 +134,7 @@ void FlowSolver::assemble_momentum(Phase phase, int d, const run::FlowState& sta
               upwind_upwind = (beyond >= 0 && kind[static_cast<std::size_t>(beyond)] != FaceClass::none)
                                   ? at(beyond) : upwind;
             }
-            row.b -= flux_out * tvd_correction(m_limiter, upwind_upwind, upwind, downwind);
+            row.b -= flux_out * tvd_correction(limiter, upwind_upwind, upwind, downwind);
           }
           break;
         }
@@ -154,17 +155,19 @@ void FlowSolver::assemble_momentum(Phase phase, int d, const run::FlowState& sta
     }
 
     const auto uc = static_cast<std::size_t>(l), un = static_cast<std::size_t>(n);
-    if (phase == gas || m_moves[gas])
+    if (phase == gas || in.settings.moves[gas])
       row.b += row.fraction * (state.gas_pressure[uc] - state.gas_pressure[un]) * row.area;
     // P_s = 0 in a pressure-boundary cell: the solids leaving through an outlet are free of stress.
     if (phase == solids) row.b += (state.solids_pressure[uc] - state.solids_pressure[un]) * row.area;
     // The optional bulk viscosity λ_s = r μ_s: σ gains −λ_s ∇·u I, lagged like P_s. It is zero
     // beyond a fluid cell, as an outlet's P_s is: compute_strain_rate gives ∇·u = 0 there.
-    if (phase == solids && m_bulk_viscosity_ratio > 0.0)
-      row.b += m_bulk_viscosity_ratio * (mu[un] * m_divergence[un] - mu[uc] * m_divergence[uc]) * row.area;
-    row.b += row.fraction * rho * m_deck.physics.gravity[ud] * row.volume;
-    if (phase == gas && !m_source[ud].empty()) row.b += m_source[ud][uc] * row.volume;
-    const double a_transient = row.fraction * rho * row.volume / dt;
+    const double ratio = in.settings.bulk_viscosity_ratio;
+    const auto& divergence = in.closures.divergence;
+    if (phase == solids && ratio > 0.0)
+      row.b += ratio * (mu[un] * divergence[un] - mu[uc] * divergence[uc]) * row.area;
+    row.b += row.fraction * rho * in.settings.gravity[ud] * row.volume;
+    if (phase == gas && !in.gas_source[ud].empty()) row.b += in.gas_source[ud][uc] * row.volume;
+    const double a_transient = row.fraction * rho * row.volume / in.dt;
     row.a += a_transient;
     row.transient = a_transient;
     row.b += a_transient * u_old[uc];

@@ -20,7 +20,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "solver/simple/flow_solver.hpp"
+#include "solver/simple/momentum_predictor.hpp"
 
 namespace bagnold::solver {
 
@@ -31,68 +31,100 @@ double correction_diagonal(double relaxed, double neighbours, bool simplec) {
 }
 }  // namespace
 
-void FlowSolver::predict_momentum(int d, run::FlowState& state, const run::FlowState& old,
-                                  double dt, Residuals& residuals) {
-  const auto& layout = m_domain.layout;
+MomentumPredictor::MomentumPredictor(const deck::Deck& deck, const Discretization& discretization,
+                                     const SolverSettings& settings, bool has_temperature)
+    : m_discretization(discretization), m_settings(settings) {
+  const MPI_Comm comm = discretization.layout().comm().get();
+  KrylovSettings krylov;
+  krylov.ksp_type = "bcgs";
+  krylov.pc_type = "bjacobi";
+  krylov.relative_tolerance = deck.numerics.momentum_tolerance;
+  const char* prefixes[2][3] = {{"momentum_x_", "momentum_y_", "momentum_z_"},
+                                {"solids_momentum_x_", "solids_momentum_y_", "solids_momentum_z_"}};
+  for (int d = 0; d < 3; ++d) {
+    const auto& n = discretization.velocity_numbering(d);
+    for (const Phase phase : {gas, solids})
+      if (settings.moves[phase])
+        m_systems[phase][static_cast<std::size_t>(d)] = std::make_unique<LinearSystem>(
+            comm, n.owned_rows(), n.first_row, prefixes[phase][d], krylov);
+  }
+  if (settings.moves[solids])
+    m_walls = std::make_unique<SolidsWallCoefficients>(deck, discretization, has_temperature);
+}
+
+bool MomentumPredictor::predict(int d, const Inputs& in, run::FlowState& state,
+                                CorrectionResponse& response, IterationSums& sums,
+                                WorstCells& worst, StepResult& record) {
+  const Discretization& disc = m_discretization;
+  const SolverSettings& settings = m_settings;
+  const auto& layout = disc.layout();
   const auto ud = static_cast<std::size_t>(d);
-  const auto& numbering = *m_velocity_numbering[ud];
-  if (numbering.total_rows == 0) return;  // e.g. no fluid faces along d
-  const double alpha = m_deck.numerics.relax_velocity;
-  const bool coupled = m_moves[gas] && m_moves[solids];
+  const auto& numbering = disc.velocity_numbering(d);
+  if (numbering.total_rows == 0) return true;  // e.g. no fluid faces along d
+  const double alpha = settings.relax_velocity;
+  const auto& moves = settings.moves;
   auto& u_g = state.gas_velocity[ud];
   auto& u_s = state.solids_velocity[ud];
+  const auto& beta_cells = in.closures.drag;
+  const auto& stiffness = in.closures.pressure_derivative;
 
-  std::array<std::vector<MomentumRow>, 2> rows;
+  const MomentumAssemblyInputs assembly{disc, settings, in.old, in.dt, in.closures, in.carried, m_gas_source};
+  auto& rows = m_rows;
   for (const Phase phase : {gas, solids})
-    if (m_moves[phase]) assemble_momentum(phase, d, state, old, dt, rows[phase]);
+    if (moves[phase])
+      assemble_momentum_rows(assembly, phase, d, state, m_walls.get(), in.refresh_wall_coefficients,
+                             rows[phase]);
 
   // The deviation normalization measures each row about the phase's mean velocity over its
   // solved rows (two collectives per phase, so only when that normalization is chosen).
   std::array<double, 2> mean{0, 0};
-  if (m_residual_normalization == ResidualNormalization::deviation) {
+  if (settings.residual_normalization == ResidualNormalization::deviation) {
     std::array<double, 2> sum{0, 0}, count{0, 0};
     for (std::size_t r = 0; r < numbering.owned_locals.size(); ++r) {
       const auto ul = static_cast<std::size_t>(numbering.owned_locals[r]);
-      if (m_moves[gas]) sum[gas] += u_g[ul], count[gas] += 1;
-      if (m_moves[solids] && rows[solids][r].active) sum[solids] += u_s[ul], count[solids] += 1;
+      if (moves[gas]) sum[gas] += u_g[ul], count[gas] += 1;
+      if (moves[solids] && rows[solids][r].active) sum[solids] += u_s[ul], count[solids] += 1;
     }
     for (const Phase phase : {gas, solids}) {
       const double n = layout.comm().sum(count[phase]);
       mean[phase] = n > 0 ? layout.comm().sum(sum[phase]) / n : 0.0;
     }
   }
-  const double least_speed = 1e-3 * m_reference_speed;
+  const double least_speed = 1e-3 * settings.reference_speed;
   std::array<MomentumResidual, 2> residual;
-  for (const Phase phase : {gas, solids})
-    residual[phase] = MomentumResidual(m_residual_normalization, mean[phase], m_velocity_scale,
-                                       least_speed, m_deck.numerics.net_force_residual);
-  auto weight = [&](Phase phase, const MomentumRow& row) {
-    return row.fraction * density(phase) * row.volume * m_gravity;
-  };
-  std::array<std::vector<double>, 2> x;
-  for (auto& v : x) v.resize(numbering.owned_locals.size());
-  for (const int e : {gas_momentum_x + d, solids_momentum_x + d}) {
-    m_worst_value[static_cast<std::size_t>(e)] = 0.0;
-    m_worst_local[static_cast<std::size_t>(e)] = -1;
+  for (const Phase phase : {gas, solids}) {
+    residual[phase] = MomentumResidual(settings.residual_normalization, mean[phase], in.velocity_scale,
+                                       least_speed, settings.net_force_residual);
+    if (moves[phase]) sums.normalization[static_cast<std::size_t>(momentum_equation(phase, d))] = residual[phase];
   }
+  auto& gas_sums = sums.momentum[static_cast<std::size_t>(momentum_equation(gas, d))];
+  auto& solids_sums = sums.momentum[static_cast<std::size_t>(momentum_equation(solids, d))];
+  auto weight = [&](Phase phase, const MomentumRow& row) {
+    return row.fraction * settings.density[phase] * row.volume * settings.gravity_magnitude;
+  };
+  auto& x = m_x;
+  for (auto& v : x) v.resize(numbering.owned_locals.size());
+  worst.reset(gas_momentum_x + d);
+  worst.reset(solids_momentum_x + d);
+  double explicit_stiffness_faces = 0.0;
   for (std::size_t r = 0; r < numbering.owned_locals.size(); ++r) {
     const int l = numbering.owned_locals[r];
     const auto ul = static_cast<std::size_t>(l);
     const int n = layout.neighbour(l, 2 * d + 1);
-    const MomentumRow* g = m_moves[gas] ? &rows[gas][r] : nullptr;
-    const MomentumRow* s = m_moves[solids] && rows[solids][r].active ? &rows[solids][r] : nullptr;
+    const MomentumRow* g = moves[gas] ? &rows[gas][r] : nullptr;
+    const MomentumRow* s = moves[solids] && rows[solids][r].active ? &rows[solids][r] : nullptr;
     const MomentumRow& any = g ? *g : rows[solids][r];
-    const double half_c = 0.5 * width(l, d), half_n = 0.5 * width(n, d);
-    const double beta = (m_beta[ul] * half_n + m_beta[static_cast<std::size_t>(n)] * half_c) / (half_c + half_n);
-    const double beta_v = coupled || (m_moves[gas] && m_drag) ? beta * any.volume : 0.0;
+    const double half_c = 0.5 * disc.width(l, d), half_n = 0.5 * disc.width(n, d);
+    const double beta = (beta_cells[ul] * half_n + beta_cells[static_cast<std::size_t>(n)] * half_c) / (half_c + half_n);
+    const double beta_v = settings.drag ? beta * any.volume : 0.0;
     const double A_g = g ? g->a + beta_v : 0.0, A_s = s ? s->a + beta_v : 0.0;
     const double R_g = g ? g->b + g->neighbours_u : 0.0, R_s = s ? s->b + s->neighbours_u : 0.0;
 
     if (g) {
-      const double row_residual = residual[gas].add(A_g, A_g * u_g[ul] - g->neighbours_u,
+      const double row_residual = residual[gas].add(gas_sums, A_g, A_g * u_g[ul] - g->neighbours_u,
                                                     A_g - g->neighbours_a, g->b + beta_v * u_s[ul],
                                                     g->transient, weight(gas, *g));
-      record_worst(gas_momentum_x + d, row_residual, l);
+      worst.record(gas_momentum_x + d, row_residual, l);
       double diagonal = A_g, rhs = g->b;
       if (s) {
         diagonal -= beta_v * beta_v / A_s;
@@ -107,18 +139,18 @@ void FlowSolver::predict_momentum(int d, run::FlowState& state, const run::FlowS
       std::copy(g->values, g->values + g->count, values);
       columns[g->count] = numbering.global[ul];
       values[g->count] = relaxed;
-      m_momentum_system[gas][ud]->set_row(numbering.global[ul], columns, values, g->count + 1,
-                                          rhs + (1.0 - alpha) * relaxed * u_g[ul]);
+      m_systems[gas][ud]->set_row(numbering.global[ul], columns, values, g->count + 1,
+                                  rhs + (1.0 - alpha) * relaxed * u_g[ul]);
       x[gas][r] = u_g[ul];
     }
-    if (m_moves[solids]) {
+    if (moves[solids]) {
       const MomentumRow& row = rows[solids][r];
       double diagonal = 1.0, rhs = 0.0;
       if (s) {
-        const double row_residual = residual[solids].add(A_s, A_s * u_s[ul] - s->neighbours_u,
+        const double row_residual = residual[solids].add(solids_sums, A_s, A_s * u_s[ul] - s->neighbours_u,
                                                          A_s - s->neighbours_a, s->b + beta_v * u_g[ul],
                                                          s->transient, weight(solids, *s));
-        record_worst(solids_momentum_x + d, row_residual, l);
+        worst.record(solids_momentum_x + d, row_residual, l);
         diagonal = A_s;
         rhs = s->b;
         if (g) {
@@ -134,22 +166,24 @@ void FlowSolver::predict_momentum(int d, run::FlowState& state, const run::FlowS
       std::copy(row.values, row.values + row.count, values);
       columns[row.count] = numbering.global[ul];
       values[row.count] = diagonal;
-      m_momentum_system[solids][ud]->set_row(numbering.global[ul], columns, values, row.count + 1, rhs);
+      m_systems[solids][ud]->set_row(numbering.global[ul], columns, values, row.count + 1, rhs);
       x[solids][r] = s ? u_s[ul] : 0.0;
     }
 
     // Velocity responses to the pressure and volume-fraction corrections.
-    const double D_g = g ? correction_diagonal(A_g / alpha, g->neighbours_a, m_simplec) : 0.0;
-    const double D_s = s ? correction_diagonal(A_s / alpha, s->neighbours_a, m_simplec) : 0.0;
+    const double D_g = g ? correction_diagonal(A_g / alpha, g->neighbours_a, settings.simplec) : 0.0;
+    const double D_s = s ? correction_diagonal(A_s / alpha, s->neighbours_a, settings.simplec) : 0.0;
     const double eps_g = g ? g->fraction : 0.0;
-    const double eps_s = m_moves[solids] ? rows[solids][r].fraction : 0.0;
+    const double eps_s = moves[solids] ? rows[solids][r].fraction : 0.0;
     // K ≥ 0: a closure whose P_s falls with ε_s at fixed strain rate (kinetic theory in its
-    // dilute range) would make the correction anti-diffusive; that part stays explicit. At an
-    // outlet (P_s = 0 beyond it) the fluid cell's K alone.
+    // dilute range) would make the correction anti-diffusive; that part stays explicit
+    // (counted as negative_stiffness). At an outlet (P_s = 0 beyond it) the fluid cell's K alone.
     const bool l_fluid = layout.kind(l) == grid::CellKind::fluid, n_fluid = layout.kind(n) == grid::CellKind::fluid;
-    const double K_l = l_fluid ? m_pressure_derivative[ul] : 0.0;
-    const double K_n = n_fluid ? m_pressure_derivative[static_cast<std::size_t>(n)] : 0.0;
-    const double K = std::max(l_fluid && n_fluid ? 0.5 * (K_l + K_n) : K_l + K_n, 0.0);
+    const double K_l = l_fluid ? stiffness[ul] : 0.0;
+    const double K_n = n_fluid ? stiffness[static_cast<std::size_t>(n)] : 0.0;
+    const double K_face = l_fluid && n_fluid ? 0.5 * (K_l + K_n) : K_l + K_n;
+    if (s && K_face < 0.0) explicit_stiffness_faces += 1.0;
+    const double K = std::max(K_face, 0.0);
     double d_g = 0.0, d_s = 0.0, e = 0.0;
     if (g && s) {
       const double det = D_g * D_s - beta_v * beta_v;
@@ -162,23 +196,30 @@ void FlowSolver::predict_momentum(int d, run::FlowState& state, const run::FlowS
       d_s = eps_s * any.area / D_s;
       e = any.area * K / D_s;
     }
-    m_d[gas][ud][ul] = d_g;
-    m_d[solids][ud][ul] = d_s;
-    m_e[ud][ul] = e;
+    response.pressure[gas][ud][ul] = d_g;
+    response.pressure[solids][ud][ul] = d_s;
+    response.fraction[ud][ul] = e;
   }
+  sums.interventions[negative_stiffness] += explicit_stiffness_faces;
 
+  bool solved = true;
   for (const Phase phase : {gas, solids}) {
-    if (!m_moves[phase]) continue;
+    if (!moves[phase]) continue;
     auto& u = phase == gas ? u_g : u_s;
-    m_momentum_system[phase][ud]->solve(x[phase]);
+    const SolveReport report = m_systems[phase][ud]->solve(x[phase]);
+    record.linear_iterations[momentum_systems] += report.iterations;
+    if (!report.converged && solved) {
+      solved = false;
+      record.failure = std::string("the ") + equation_name(momentum_equation(phase, d)) +
+                       " linear solve did not converge (" + report.reason + ")";
+    }
     for (std::size_t r = 0; r < numbering.owned_locals.size(); ++r)
       u[static_cast<std::size_t>(numbering.owned_locals[r])] = x[phase][r];
     parallel::exchange_halo<double>(layout, u);
-    parallel::exchange_halo<double>(layout, m_d[phase][ud]);
-    residuals.value[static_cast<std::size_t>((phase == gas ? gas_momentum_x : solids_momentum_x) + d)] =
-        residual[phase].value(layout.comm());
+    parallel::exchange_halo<double>(layout, response.pressure[phase][ud]);
   }
-  if (m_moves[solids]) parallel::exchange_halo<double>(layout, m_e[ud]);
+  if (moves[solids]) parallel::exchange_halo<double>(layout, response.fraction[ud]);
+  return solved;
 }
 
 }  // namespace bagnold::solver

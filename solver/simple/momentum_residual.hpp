@@ -19,9 +19,9 @@
 //     round-off. The normalized residual is at most about 1 (triangle inequality). Not the
 //     default: the 10 mm bin takes 1.6x the steps with it (381 against 238 to 0.2 s, the same
 //     rate within 0.04 %; docs/stability.md).
+#include <array>
+#include <cstddef>
 #include <string>
-
-#include "src/parallel/communicator.hpp"
 
 namespace bagnold::solver {
 
@@ -35,6 +35,14 @@ ResidualNormalization residual_normalization_from_name(const std::string& name);
 // 10⁴ (the free-slip chute accepted steps 6 % short of g sin θ at tolerance 1e-4).
 class MomentumResidual {
  public:
+  // The local sums of one phase and component: Σ|s − L u|, the normalization, Σ (s − L u) and
+  // Σ ε ρ V |g|. Added over the ranks with every other residual of the outer iteration
+  // (IterationSums::reduce), then turned into the normalized residual by value().
+  struct Sums {
+    static constexpr std::size_t size = 4;
+    std::array<double, size> values{};
+  };
+
   MomentumResidual() = default;
   // mean: ū over the phase's solved rows (all ranks); velocity_scale: U; least_speed: U_min;
   // net_force: whether value() also bounds the net residual against the weight.
@@ -43,20 +51,18 @@ class MomentumResidual {
       : m_kind(kind), m_mean(mean), m_velocity_scale(velocity_scale), m_least_speed(least_speed),
         m_net_force(net_force) {}
 
-  // One row (arguments as above; transient = ε ρ V/dt; weight = ε ρ V |g|). Returns the row's
-  // residual |s − L u|.
-  double add(double diagonal, double operator_u, double operator_one, double source, double transient,
-             double weight = 0.0);
+  // One row (arguments as above; transient = ε ρ V/dt; weight = ε ρ V |g|) added to `sums`.
+  // Returns the row's residual |s − L u|.
+  double add(Sums& sums, double diagonal, double operator_u, double operator_one, double source,
+             double transient, double weight = 0.0) const;
 
-  // Collective: the normalized residual over all ranks' rows (0 without any residual).
-  double value(const parallel::Communicator& comm) const;
+  // The normalized residual from sums over all ranks (0 without any residual).
+  double value(const Sums& total) const;
 
  private:
   ResidualNormalization m_kind = ResidualNormalization::deviation;
   double m_mean = 0.0, m_velocity_scale = 1.0, m_least_speed = 0.0;
   bool m_net_force = false;
-  double m_residual = 0.0, m_norm = 0.0;
-  double m_net = 0.0, m_weight = 0.0;  // Σ (s − L u) and Σ ε ρ V |g|
 };
 
 }  // namespace bagnold::solver

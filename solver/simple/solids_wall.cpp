@@ -9,7 +9,6 @@
 #include "models/rdf/radial_distribution.hpp"
 #include "models/stress/friction_table.hpp"
 #include "models/wall/wall_coefficient.hpp"
-#include "solver/simple/flow_solver.hpp"
 
 namespace bagnold::solver {
 
@@ -76,13 +75,27 @@ double SolidsWalls::coefficient(int region, const NearWallSolids& near, double w
   return mu / wall_distance;
 }
 
+SolidsWallCoefficients::SolidsWallCoefficients(const deck::Deck& deck,
+                                               const Discretization& discretization,
+                                               bool has_temperature)
+    : m_walls(deck, discretization.domain().regions.regions, has_temperature) {
+  if (m_walls.any_partial())
+    for (auto& held : m_held) held.assign(6 * static_cast<std::size_t>(discretization.layout().local_count()), 0.0);
+}
+
 // The wall face across `link` from the tangential velocity (component d) between cells l and
-// its + neighbour n; e the wall-normal direction, δ the distance to the wall.
-double FlowSolver::solids_wall_coefficient(const run::FlowState& state, const Link& link, int l,
-                                           int d, int e, double wall_distance) const {
-  const auto& layout = m_domain.layout;
+// its + neighbour n: the near-wall solids averaged over the fluid cells of the two.
+double SolidsWallCoefficients::coefficient(const Discretization& discretization,
+                                           const run::FlowState& state,
+                                           const ClosureFields& closures, const Link& link, int l,
+                                           int d, int face, bool refresh) {
+  double& held = m_held[static_cast<std::size_t>(d)][6 * static_cast<std::size_t>(l) + static_cast<std::size_t>(face)];
+  if (!refresh) return held;
+  const auto& layout = discretization.layout();
+  const int e = parallel::face_direction(face);
+  const double wall_distance = 0.5 * discretization.width(l, e);
   const int n = layout.neighbour(l, 2 * d + 1);
-  const auto& region = m_domain.regions.regions[static_cast<std::size_t>(link.region)];
+  const auto& region = discretization.domain().regions.regions[static_cast<std::size_t>(link.region)];
   NearWallSolids near;
   int count = 0;
   for (const int c : {l, n}) {
@@ -90,29 +103,27 @@ double FlowSolver::solids_wall_coefficient(const run::FlowState& state, const Li
     const auto i = static_cast<std::size_t>(c);
     near.fraction += state.solids_fraction[i];
     near.pressure += state.solids_pressure[i];
-    near.viscosity += m_viscosity[solids][i];
-    near.strain_rate += m_strain_rate.empty() ? 0.0 : m_strain_rate[i];
+    near.viscosity += closures.viscosity[solids][i];
+    near.strain_rate += closures.strain_rate[i];
     near.temperature += state.granular_temperature[i];
     double slip2 = 0.0;  // tangential slip at the cell centre
     for (int a = 0; a < 3; ++a) {
       if (a == e) continue;
-      const auto& u = state.solids_velocity[static_cast<std::size_t>(a)];
-      const int minus = layout.neighbour(c, 2 * a);
-      const double centred = 0.5 * (u[i] + (minus >= 0 ? u[static_cast<std::size_t>(minus)] : u[i]));
-      const double slip = centred - region.wall_velocity[static_cast<std::size_t>(a)];
+      const double slip = centre_velocity(layout, state.solids_velocity[static_cast<std::size_t>(a)], c, a) -
+                          region.wall_velocity[static_cast<std::size_t>(a)];
       slip2 += slip * slip;
     }
     near.slip_speed += std::sqrt(slip2);
     ++count;
   }
-  if (count == 0) return 0.0;
+  if (count == 0) return held = 0.0;
   near.fraction /= count;
   near.pressure /= count;
   near.viscosity /= count;
   near.strain_rate /= count;
   near.temperature /= count;
   near.slip_speed /= count;
-  return m_solids_walls->coefficient(link.region, near, wall_distance);
+  return held = m_walls.coefficient(link.region, near, wall_distance);
 }
 
 }  // namespace bagnold::solver

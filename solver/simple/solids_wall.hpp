@@ -9,8 +9,9 @@
 //   johnson-jackson  c_JJ(φ, g0, Θ) (models/wall/johnson_jackson.hpp): Θ of the cell where the
 //                    closure defines one, else the wall temperature at which q_w = 0
 //   dense-slip       ρ_s d γ̇/F(η), the report's App. C slip (models/wall/dense_slip.hpp)
-// Evaluated on the first outer iteration of a step and held for the rest of it (FlowSolver's
-// m_wall_coefficients).
+// Evaluated on the first outer iteration of a step and held for the rest of it
+// (SolidsWallCoefficients): the slip laws switch steeply near yield (η ≈ η_s), and
+// re-evaluating them every iteration made the iterations cycle.
 
 #include <algorithm>
 #include <memory>
@@ -19,7 +20,11 @@
 
 #include "models/wall/dense_slip.hpp"
 #include "models/wall/johnson_jackson.hpp"
+#include "solver/discretization.hpp"
+#include "solver/simple/iteration_fields.hpp"
+#include "solver/velocity_faces.hpp"
 #include "src/deck/deck.hpp"
+#include "src/run/flow_state.hpp"
 
 namespace bagnold::solver {
 
@@ -61,6 +66,26 @@ class SolidsWalls {
   models::Material m_material;
   bool m_has_temperature;
   std::vector<Law> m_laws;
+};
+
+// The held c_w [Pa s/m] of every partial-slip solids wall face, per tangential component d and
+// slot 6 × local + face of the velocity's stencil.
+class SolidsWallCoefficients {
+ public:
+  SolidsWallCoefficients(const deck::Deck& deck, const Discretization& discretization,
+                         bool has_temperature);
+
+  // Whether the wall across `link` has a partial-slip solids law.
+  bool partial(const Link& link) const { return m_walls.partial(link.region); }
+  // c_w of the face `face` of the component-d velocity owned by l, evaluated now from the
+  // iterate (refresh) or as last evaluated. e the wall-normal direction.
+  double coefficient(const Discretization& discretization, const run::FlowState& state,
+                     const ClosureFields& closures, const Link& link, int l, int d, int face,
+                     bool refresh);
+
+ private:
+  SolidsWalls m_walls;
+  std::array<std::vector<double>, 3> m_held;  // empty without partial-slip walls
 };
 
 // The closure's packing limit φ_max for Johnson–Jackson: 1 − packed_gas_fraction where the

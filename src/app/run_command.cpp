@@ -6,11 +6,11 @@
 #include <chrono>
 #include <cstdio>
 
-#include "solver/time_loop.hpp"
 #include "src/run/progress.hpp"
 #include "src/run/stop_request.hpp"
 #include "src/app/commands.hpp"
 #include "src/app/exit_codes.hpp"
+#include "src/app/time_loop.hpp"
 #include "src/deck/load.hpp"
 #include "src/io/monitor.hpp"
 #include "src/parallel/domain_summary.hpp"
@@ -90,7 +90,7 @@ int run_command(const DeckArguments& args) {
         return bad_input;
       }
     }
-    io::Monitor monitor(output.directory() + "/monitor.csv", run::monitor_columns(domain.regions),
+    io::Monitor monitor(output.directory() + "/monitor.csv", monitor_columns(domain),
                         comm.is_root(), start.snapshot.empty() ? nullptr : &start.time);
     solver::PetscSession petsc(nullptr, nullptr);
     solver::PetscSession::add_options(args.petsc_options);
@@ -101,10 +101,10 @@ int run_command(const DeckArguments& args) {
     }
     run::install_stop_handlers();
     run::ProgressLine progress(deck.output.progress, comm.is_root(), deck.run.end_time, start.time);
-    const solver::TimeLoopContext context{deck, domain, output, monitor, progress,
+    const TimeLoopContext context{deck, domain, output, monitor, progress,
                                           [](const std::string& line) { say(line); }};
     const auto started = std::chrono::steady_clock::now();
-    const auto result = solver::run_time_loop(context, flow, state, start.time, start.step, start.dt);
+    const auto result = run_time_loop(context, flow, state, start.time, start.step, start.dt);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     const double per_step = result.steps ? static_cast<double>(result.outer_iterations) /
                                                static_cast<double>(result.steps)

@@ -41,8 +41,11 @@ std::int64_t Communicator::min(std::int64_t x) const {
 }
 
 void Communicator::sum_in_place(std::vector<double>& values) const {
-  MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_DOUBLE,
-                MPI_SUM, m_comm);
+  sum_in_place(values.data(), values.size());
+}
+
+void Communicator::sum_in_place(double* values, std::size_t count) const {
+  MPI_Allreduce(MPI_IN_PLACE, values, static_cast<int>(count), MPI_DOUBLE, MPI_SUM, m_comm);
 }
 
 std::int64_t Communicator::exclusive_scan(std::int64_t x) const {

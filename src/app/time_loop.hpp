@@ -1,9 +1,9 @@
 #pragma once
-// The time loop of a run: advance with an adaptive step from the current time to run.end_time,
+// The time loop of a run (the program's: solver/ advances one step): advance with an adaptive step from the current time to run.end_time,
 // append the monitor every step, write snapshots when due, show progress.
 //
 // Adaptive time step: a step that does not converge within numerics.max_outer_iterations (or
-// produces NaN) is undone and redone with dt / 2; a step that converges within
+// produces NaN, or has a linear solve that fails) is undone and redone with dt / 2; a step that converges within
 // numerics.easy_outer_iterations lets the next grow by numerics.dt_growth, up to run.dt_max;
 // one that needs more than numerics.hard_outer_iterations (if set) makes the next shrink by it,
 // down to run.dt_max / 4.
@@ -18,7 +18,10 @@
 #include "src/run/output_writer.hpp"
 #include "src/run/progress.hpp"
 
-namespace bagnold::solver {
+namespace bagnold::app {
+
+using solver::FlowSolver;
+using solver::StepResult;
 
 struct RunSummary {
   bool completed = false;
@@ -42,11 +45,14 @@ struct TimeLoopContext {
 
 // From `start_time` (step number `start_step`) with a first step of `dt_start`. A SIGINT or
 // SIGTERM stops the loop after the current step with a final snapshot (summary.interrupted).
-RunSummary run_time_loop(const TimeLoopContext& context, FlowSolver& solver, run::FlowState& state,
+RunSummary run_time_loop(const TimeLoopContext& context, FlowSolver& flow, run::FlowState& state,
                          double start_time, long start_step, double dt_start);
 
-// The monitor row after a step (columns of run::monitor_columns).
-std::vector<double> monitor_row(const TimeLoopContext& context, const FlowSolver& solver,
+// The monitor's columns: run::monitor_columns, then a count per numerical limiter and the linear
+// iterations per kind of system, each summed over the step's outer iterations.
+std::vector<std::string> monitor_columns(const parallel::Domain& domain);
+// The monitor row after a step.
+std::vector<double> monitor_row(const TimeLoopContext& context, const FlowSolver& flow,
                                 const run::FlowState& state, double dt, const StepResult& step);
 
-}  // namespace bagnold::solver
+}  // namespace bagnold::app

@@ -1,4 +1,4 @@
-#include "solver/time_loop.hpp"
+#include "src/app/time_loop.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,19 +7,28 @@
 #include "src/run/monitor_columns.hpp"
 #include "src/run/stop_request.hpp"
 
-namespace bagnold::solver {
+namespace bagnold::app {
 
-std::vector<double> monitor_row(const TimeLoopContext& context, const FlowSolver& solver,
+std::vector<std::string> monitor_columns(const parallel::Domain& domain) {
+  auto columns = run::monitor_columns(domain.regions);
+  for (int i = 0; i < solver::intervention_count; ++i) columns.push_back(solver::intervention_name(i));
+  for (int k = 0; k < solver::linear_system_count; ++k) columns.push_back(solver::linear_system_name(k));
+  return columns;
+}
+
+std::vector<double> monitor_row(const TimeLoopContext& context, const FlowSolver& flow,
                                 const run::FlowState& state, double dt, const StepResult& step) {
   const auto inventory = run::phase_inventory(context.deck, context.domain, state);
   std::vector<double> row = {dt, static_cast<double>(step.iterations), step.residuals.largest(),
                              inventory.gas, inventory.solids};
-  const auto gas_flux = solver.boundary_mass_flux(state, Phase::gas);
-  const auto solids_flux = solver.stepped_solids_flux(state);
+  const auto gas_flux = flow.boundary_mass_flux(state, solver::gas);
+  const auto solids_flux = flow.stepped_solids_flux(state);
   for (std::size_t r = 0; r < gas_flux.size(); ++r) {
     row.push_back(gas_flux[r]);
     row.push_back(solids_flux[r]);
   }
+  row.insert(row.end(), step.interventions.begin(), step.interventions.end());
+  row.insert(row.end(), step.linear_iterations.begin(), step.linear_iterations.end());
   return row;
 }
 
@@ -29,7 +38,7 @@ namespace {
 constexpr double hard_step_floor = 0.25;
 }  // namespace
 
-RunSummary run_time_loop(const TimeLoopContext& context, FlowSolver& solver, run::FlowState& state,
+RunSummary run_time_loop(const TimeLoopContext& context, FlowSolver& flow, run::FlowState& state,
                          double start_time, long start_step, double dt_start) {
   const auto& run = context.deck.run;
   const auto& numerics = context.deck.numerics;
@@ -47,26 +56,30 @@ RunSummary run_time_loop(const TimeLoopContext& context, FlowSolver& solver, run
     const double to_snapshot = context.output.next_snapshot_time() - time;
     if (to_snapshot > tiny && to_snapshot < dt_try) dt_try = to_snapshot;
     old = state;
-    const StepResult result = solver.advance(state, old, dt_try);
+    const StepResult result = flow.advance(state, old, dt_try);
     summary.outer_iterations += result.iterations;
     if (!result.converged) {
       failed = state;
       state = old;
       ++summary.redone_steps;
       dt = 0.5 * dt_try;
-      context.log(fmt::format("t = {:.6g} s: step not converged (largest residual {:.3g} after {} "
-                              "outer iterations); dt -> {:.3g} s, step redone",
-                              time, result.residuals.largest(), result.iterations, dt));
+      const std::string why =
+          result.failure.empty()
+              ? fmt::format("largest residual {:.3g} after {} outer iterations",
+                            result.residuals.largest(), result.iterations)
+              : fmt::format("{} in outer iteration {}", result.failure, result.iterations);
+      context.log(fmt::format("t = {:.6g} s: step not converged ({}); dt -> {:.3g} s, step redone",
+                              time, why, dt));
       if (dt < run.dt_min) {
         // Stop cleanly: the failed iterate goes to diagnostic.h5, the message says where.
         const int worst = result.residuals.worst();
-        const auto where = solver.worst_cell(worst);
+        const auto where = flow.worst_cell(worst);
         const std::string diagnostic = context.output.write_diagnostic(failed, time, step, dt_try);
         summary.failure = fmt::format(
             "the time step fell below run.dt_min = {:.3g} s at t = {:.6g} s; the {} equation "
             "diverged (normalized residual {:.3g}), worst in cell ({}, {}, {}) at ({:.4g}, {:.4g}, "
             "{:.4g}) m; the failed iterate is in {}",
-            run.dt_min, time, equation_name(worst), result.residuals.value[static_cast<std::size_t>(worst)], where.cell[0], where.cell[1],
+            run.dt_min, time, solver::equation_name(worst), result.residuals.value[static_cast<std::size_t>(worst)], where.cell[0], where.cell[1],
             where.cell[2], where.position[0], where.position[1], where.position[2], diagnostic);
         break;
       }
@@ -75,7 +88,7 @@ RunSummary run_time_loop(const TimeLoopContext& context, FlowSolver& solver, run
     time += dt_try;
     ++step;
     summary.last_dt = dt_try;
-    context.monitor.append(time, monitor_row(context, solver, state, dt_try, result));
+    context.monitor.append(time, monitor_row(context, flow, state, dt_try, result));
     double next_dt = dt;
     if (result.iterations <= numerics.easy_outer_iterations && dt_try >= dt * (1 - 1e-12) &&
         dt < run.dt_max) {
@@ -114,4 +127,4 @@ RunSummary run_time_loop(const TimeLoopContext& context, FlowSolver& solver, run
   return summary;
 }
 
-}  // namespace bagnold::solver
+}  // namespace bagnold::app

@@ -1,0 +1,37 @@
+// The per-rank discretization (discretization.hpp): widths, face classes, numberings.
+#include "solver/discretization.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace bagnold::solver {
+
+Discretization::Discretization(const parallel::Domain& domain) : m_domain(domain) {
+  const auto& layout = domain.layout;
+  const auto local = static_cast<std::size_t>(layout.local_count());
+  m_width.resize(3 * local);
+  for (std::size_t l = 0; l < local; ++l) {
+    const auto ijk = layout.index3(static_cast<int>(l));
+    for (int d = 0; d < 3; ++d)
+      m_width[3 * l + static_cast<std::size_t>(d)] = domain.grid.axis(d).width(ijk[static_cast<std::size_t>(d)]);
+  }
+  m_faces[gas] = std::make_unique<VelocityFaces>(domain, false);
+  m_faces[solids] = std::make_unique<VelocityFaces>(domain, true);
+  for (int d = 0; d < 3; ++d) {
+    const auto& kind = faces(gas).kind[static_cast<std::size_t>(d)];
+    m_velocity_numbering[static_cast<std::size_t>(d)] = std::make_unique<UnknownNumbering>(
+        layout, [&](int l) { return kind[static_cast<std::size_t>(l)] == FaceClass::unknown; });
+  }
+  m_cell_numbering = std::make_unique<UnknownNumbering>(
+      layout, [&](int l) { return layout.kind(l) == grid::CellKind::fluid; });
+  double faces_area = 0.0;
+  double smallest = INFINITY;
+  for (int l = 0; l < layout.owned_fluid_count(); ++l)
+    for (int d = 0; d < 3; ++d) faces_area += face_area(l, d);  // ½ Σ over the 6 faces
+  for (int d = 0; d < 3; ++d)
+    for (int l = 0; l < layout.owned_fluid_count(); ++l) smallest = std::min(smallest, width(l, d));
+  m_reference_area = layout.comm().sum(faces_area);
+  m_smallest_width = smallest;
+}
+
+}  // namespace bagnold::solver

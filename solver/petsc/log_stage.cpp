@@ -1,0 +1,23 @@
+// PETSc log stages of the outer iteration (log_stage.hpp), registered on first use.
+#include "solver/petsc/log_stage.hpp"
+
+#include <array>
+
+namespace bagnold::solver {
+
+namespace {
+PetscLogStage stage_id(Stage stage) {
+  static const std::array<PetscLogStage, 4> ids = [] {
+    std::array<PetscLogStage, 4> registered{};
+    const char* names[4] = {"Closures", "Momentum", "Pressure", "VolumeFraction"};
+    for (std::size_t i = 0; i < registered.size(); ++i) PetscLogStageRegister(names[i], &registered[i]);
+    return registered;
+  }();
+  return ids[static_cast<std::size_t>(stage)];
+}
+}  // namespace
+
+ScopedStage::ScopedStage(Stage stage) { PetscLogStagePush(stage_id(stage)); }
+ScopedStage::~ScopedStage() { PetscLogStagePop(); }
+
+}  // namespace bagnold::solver

@@ -1,0 +1,19 @@
+#pragma once
+// PETSc log stages for the phases of the outer iteration, so that `-log_view` splits the time
+// of a run by phase: a ScopedStage pushes its stage for its lifetime.
+
+#include <petscsys.h>
+
+namespace bagnold::solver {
+
+enum class Stage { closures, momentum, pressure, fraction };
+
+class ScopedStage {
+ public:
+  explicit ScopedStage(Stage stage);
+  ~ScopedStage();
+  ScopedStage(const ScopedStage&) = delete;
+  ScopedStage& operator=(const ScopedStage&) = delete;
+};
+
+}  // namespace bagnold::solver

@@ -1,0 +1,114 @@
+// Step 0 of the outer iteration: drag and solids stress at cell centres (closures.hpp).
+#include "solver/simple/closures.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "solver/strain_rate.hpp"
+
+namespace bagnold::solver {
+
+Closures::Closures(const deck::Deck& deck, const Discretization& discretization)
+    : m_material(deck.solids.material),
+      m_drag_properties{deck.gas.density, deck.gas.viscosity, deck.solids.material.diameter,
+                        deck.solids.material.density},
+      m_gas_viscosity(deck.gas.viscosity),
+      m_relaxation_time(deck.numerics.pressure_shear_rate_relaxation_time) {
+  const auto& domain = discretization.domain();
+  if (deck.solids.enabled && deck.gas.enabled)
+    m_drag = models::drag_registry().create(deck.models.drag.name, deck.models.drag.coefficients);
+  if (deck.solids.enabled && deck.solids.momentum) {
+    m_stress = models::stress_registry().create(deck.models.solids_stress.name,
+                                                deck.models.solids_stress.coefficients);
+    if (deck.numerics.wall_shear_in_strain_rate)
+      for (std::size_t r = 0; r < domain.regions.regions.size(); ++r)
+        m_wall_shear_regions.push_back(domain.regions.types[r] == grid::BoundaryType::no_slip_wall &&
+                                       domain.regions.regions[r].solids_wall == "no-slip");
+  }
+  const auto local = static_cast<std::size_t>(discretization.layout().local_count());
+  m_cells.reserve(local);
+  for (auto* v : {&m_fraction, &m_rate, &m_pressure_rate, &m_divergence, &m_slip, &m_pressure,
+                  &m_derivative, &m_shear, &m_bulk, &m_temperature, &m_unused[0], &m_unused[1],
+                  &m_unused[2]})
+    v->resize(local);
+}
+
+void Closures::evaluate(const Discretization& discretization, run::FlowState& state,
+                        const run::FlowState& old, double dt, ClosureFields& fields) {
+  if (m_drag) evaluate_drag(discretization, state, fields);
+  evaluate_solids_stress(discretization, state, old, dt, fields);
+}
+
+void Closures::evaluate_drag(const Discretization& discretization, const run::FlowState& state,
+                             ClosureFields& fields) {
+  const auto& layout = discretization.layout();
+  m_cells.clear();
+  for (int l = 0; l < layout.local_count(); ++l) {
+    fields.drag[static_cast<std::size_t>(l)] = 0.0;
+    if (layout.kind(l) != grid::CellKind::fluid) continue;
+    double slip2 = 0.0;  // |u_g − u_s|² at the centre
+    for (int d = 0; d < 3; ++d) {
+      const double relative = centre_velocity(layout, state.gas_velocity[static_cast<std::size_t>(d)], l, d) -
+                              centre_velocity(layout, state.solids_velocity[static_cast<std::size_t>(d)], l, d);
+      slip2 += relative * relative;
+    }
+    const std::size_t k = m_cells.size();
+    m_cells.push_back(l);
+    m_fraction[k] = state.gas_fraction[static_cast<std::size_t>(l)];
+    m_slip[k] = std::sqrt(slip2);
+  }
+  const std::size_t n = m_cells.size();
+  const std::span<double> beta(m_pressure.data(), n);
+  m_drag->evaluate(m_drag_properties, {std::span(m_fraction.data(), n), std::span(m_slip.data(), n)}, beta);
+  for (std::size_t i = 0; i < n; ++i) fields.drag[static_cast<std::size_t>(m_cells[i])] = beta[i];
+}
+
+void Closures::evaluate_solids_stress(const Discretization& discretization, run::FlowState& state,
+                                      const run::FlowState& old, double dt, ClosureFields& fields) {
+  const auto& layout = discretization.layout();
+  for (int l = 0; l < layout.local_count(); ++l)
+    fields.viscosity[gas][static_cast<std::size_t>(l)] = state.gas_fraction[static_cast<std::size_t>(l)] * m_gas_viscosity;
+  if (!m_stress) return;
+
+  compute_strain_rate(discretization.domain(), state.solids_velocity, fields.strain_rate,
+                      fields.divergence, m_wall_shear_regions);
+  const double weight = m_relaxation_time > 0.0 ? dt / m_relaxation_time : 0.0;
+  m_cells.clear();
+  for (int l = 0; l < layout.local_count(); ++l) {
+    if (layout.kind(l) != grid::CellKind::fluid) continue;
+    const auto i = static_cast<std::size_t>(l);
+    const std::size_t k = m_cells.size();
+    m_cells.push_back(l);
+    m_fraction[k] = std::max(state.solids_fraction[i], 0.0);  // round-off below 0 at an emptying cell
+    m_rate[k] = fields.strain_rate[i];
+    m_divergence[k] = fields.divergence[i];
+    const double before = old.pressure_shear_rate[i];
+    m_pressure_rate[k] = m_relaxation_time > 0.0 && std::isfinite(before)
+                             ? (before + weight * fields.strain_rate[i]) / (1.0 + weight)
+                             : fields.strain_rate[i];
+  }
+  const std::size_t n = m_cells.size();
+  auto part = [n](std::vector<double>& v) { return std::span<double>(v.data(), n); };
+  auto input = [n](const std::vector<double>& v) { return std::span<const double>(v.data(), n); };
+  models::SolidsStress out{part(m_pressure), part(m_derivative), part(m_shear), part(m_bulk),
+                           part(m_temperature)};
+  m_stress->evaluate(m_material, {input(m_fraction), input(m_rate), input(m_divergence)}, out);
+  if (m_relaxation_time > 0.0) {
+    // P_s and dP_s/dε_s at γ̇_P; the other outputs of this call are not used.
+    models::SolidsStress at_relaxed_rate{part(m_pressure), part(m_derivative), part(m_unused[0]),
+                                         part(m_unused[1]), part(m_unused[2])};
+    m_stress->evaluate(m_material, {input(m_fraction), input(m_pressure_rate), input(m_divergence)},
+                       at_relaxed_rate);
+  }
+  for (std::size_t k = 0; k < n; ++k) {
+    const auto i = static_cast<std::size_t>(m_cells[k]);
+    state.solids_pressure[i] = m_pressure[k];
+    state.pressure_shear_rate[i] = m_pressure_rate[k];
+    state.granular_temperature[i] = m_temperature[k];
+    fields.pressure_derivative[i] = m_derivative[k];
+    fields.viscosity[solids][i] = m_shear[k];
+    fields.bulk_viscosity[i] = m_bulk[k];
+  }
+}
+
+}  // namespace bagnold::solver

@@ -1,0 +1,62 @@
+#pragma once
+// Step 0 of the outer iteration: the closures on the current iterate, at cell centres.
+//   β        the drag law (models/drag/) at ε_g and the slip speed |u_g − u_s| between the
+//            phases' centre velocities (centre_velocity, discretization.hpp);
+//   ε_g μ_g  the gas's effective viscosity;
+//   P_s, dP_s/dε_s, μ_s, λ_s, Θ   the solids-stress model (models/stress/) at ε_s and the
+//            strain-rate invariants of the solids velocity (solver/strain_rate.hpp).
+// Evaluated over every local fluid cell (the halo included, since the strain rate is
+// exchanged), so the momentum stencils need no further exchange.
+// With numerics.pressure_shear_rate_relaxation_time τ_P > 0, P_s and dP_s/dε_s come from a second
+// evaluation at γ̇_P, the strain rate relaxed in time: implicit Euler of dγ̇_P/dt = (γ̇ − γ̇_P)/τ_P
+// per cell, from the step's old γ̇_P (γ̇_P = γ̇ where old has none: a fresh start, or a restart
+// from a snapshot written before the field existed). μ_s and Θ keep the current rate.
+// P_s, γ̇_P and Θ go into the state (written to snapshots); the rest into ClosureFields.
+
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "models/drag/drag_law.hpp"
+#include "models/stress/solids_stress.hpp"
+#include "solver/discretization.hpp"
+#include "solver/simple/iteration_fields.hpp"
+#include "src/deck/deck.hpp"
+#include "src/run/flow_state.hpp"
+
+namespace bagnold::solver {
+
+class Closures {
+ public:
+  Closures(const deck::Deck& deck, const Discretization& discretization);
+
+  // Fills `fields` (and state's P_s, γ̇_P, Θ) from the iterate `state`; `old` holds the step's
+  // start (its γ̇_P), dt the step.
+  void evaluate(const Discretization& discretization, run::FlowState& state,
+                const run::FlowState& old, double dt, ClosureFields& fields);
+
+  // The solids-stress model, null unless the solids move.
+  const models::SolidsStressModel* stress() const { return m_stress.get(); }
+  const models::Material& material() const { return m_material; }
+
+ private:
+  void evaluate_drag(const Discretization& discretization, const run::FlowState& state,
+                     ClosureFields& fields);
+  void evaluate_solids_stress(const Discretization& discretization, run::FlowState& state,
+                              const run::FlowState& old, double dt, ClosureFields& fields);
+
+  models::Material m_material;
+  models::DragProperties m_drag_properties;
+  double m_gas_viscosity;
+  double m_relaxation_time;  // τ_P [s], 0: off
+  std::unique_ptr<models::DragLaw> m_drag;              // null without both phases
+  std::unique_ptr<models::SolidsStressModel> m_stress;  // null unless the solids move
+  std::vector<bool> m_wall_shear_regions;  // per region: its wall shear enters γ̇ (empty: none)
+  // Scratch, sized once: the fluid cells and the closures' inputs and outputs over them.
+  std::vector<int> m_cells;
+  std::vector<double> m_fraction, m_rate, m_pressure_rate, m_divergence, m_slip;
+  std::vector<double> m_pressure, m_derivative, m_shear, m_bulk, m_temperature;
+  std::array<std::vector<double>, 3> m_unused;  // outputs of the second evaluation at γ̇_P
+};
+
+}  // namespace bagnold::solver

@@ -1,0 +1,37 @@
+#pragma once
+// The phase fractions at a staggered face, from the cell-centred ε of the two cells beside it
+// (the owning cell c and its + neighbour n along d):
+//   face_fraction     ε at the face for the momentum equation: linear between the two
+//                     centres; at a boundary face, what flows through it (an inlet's own
+//                     fraction coming in, the fluid cell's going out: the mean of the two would
+//                     feed a bed only half its inflow's gas);
+//   carried_fraction  ε carried through the face by continuity: the gas's face_fraction, the
+//                     solids' upwind value (c when u_s ≥ 0).
+// Below solids_threshold on both sides of a face the solids momentum there is not solved.
+
+#include "solver/discretization.hpp"
+#include "solver/simple/iteration_fields.hpp"
+#include "src/run/flow_state.hpp"
+
+namespace bagnold::solver {
+
+// ε_s below which a face's solids momentum is not solved (u_s = 0 there): far below any
+// fraction that carries momentum (the closures' dilute_cutoff defaults to the same 1e-6), so
+// that the solids rows of an empty cell are not solved for a velocity nothing carries.
+inline constexpr double solids_threshold = 1e-6;
+
+double face_fraction(const Discretization& discretization, const run::FlowState& state, Phase phase,
+                     int local, int d);
+double carried_fraction(const Discretization& discretization, const run::FlowState& state,
+                        Phase phase, int local, int d);
+// Whether the solids momentum on the face of `local` along d is solved.
+bool solids_present(const Discretization& discretization, const run::FlowState& state, int local, int d);
+
+// Refreshes carried(phase, d) at every local cell.
+void carry_fractions(const Discretization& discretization, const run::FlowState& state, Phase phase,
+                     int d, CarriedFractions& carried);
+// Every phase and direction.
+void carry_all_fractions(const Discretization& discretization, const run::FlowState& state,
+                         CarriedFractions& carried);
+
+}  // namespace bagnold::solver

@@ -1,0 +1,43 @@
+#pragma once
+// The values the steps of one outer iteration hand each other (flow_solver.hpp, "One time
+// step"). Each is written by one step and read by the ones after it; all are per local cell
+// (owned and halo), indexed like the flow fields.
+
+#include <array>
+#include <vector>
+
+namespace bagnold::solver {
+
+// Step 0's output, the closures at cell centres on the current iterate.
+struct ClosureFields {
+  explicit ClosureFields(std::size_t local_count);
+  std::vector<double> drag;                      // β [kg/(m³ s)]
+  std::array<std::vector<double>, 2> viscosity;  // ε_g μ_g and μ_s [Pa s]
+  std::vector<double> bulk_viscosity;            // λ_s [Pa s] of the closure
+  std::vector<double> pressure_derivative;       // dP_s/dε_s [Pa] at fixed strain rate
+  std::vector<double> strain_rate;               // γ̇ = sqrt(2 D:D) of the solids [1/s]
+  std::vector<double> divergence;                // ∇·u_s [1/s]
+};
+
+// The fraction of each phase carried through each face (per phase, direction d, owning cell):
+// the gas's linear face value, the solids' upwind value (carried_fraction in
+// face_fractions.hpp). Refreshed whenever a velocity or fraction it depends on changes, so each
+// face's value is computed once per change instead of by every stencil that reads it.
+struct CarriedFractions {
+  explicit CarriedFractions(std::size_t local_count);
+  std::array<std::array<std::vector<double>, 3>, 2> value;  // [phase][d]
+  const std::vector<double>& operator()(int phase, int d) const {
+    return value[static_cast<std::size_t>(phase)][static_cast<std::size_t>(d)];
+  }
+};
+
+// The momentum predictor's output for the corrections: on every unknown face along d,
+//   u_m += d_m (p'_c − p'_n)    (both phases, pressure correction)
+//   u_s += e (ε'_c − ε'_n)      (solids, volume-fraction correction).
+struct CorrectionResponse {
+  explicit CorrectionResponse(std::size_t local_count);
+  std::array<std::array<std::vector<double>, 3>, 2> pressure;  // d_m [m³ s/kg] per [phase][d]
+  std::array<std::vector<double>, 3> fraction;                 // e [m/s] per d
+};
+
+}  // namespace bagnold::solver

@@ -1,0 +1,53 @@
+#pragma once
+// Step 1 of the outer iteration: the momentum predictors of both phases for one velocity
+// component, with partial elimination of the drag coupling (momentum_predictor.cpp).
+
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "solver/petsc/linear_system.hpp"
+#include "solver/simple/momentum_rows.hpp"
+#include "solver/simple/step_record.hpp"
+
+namespace bagnold::solver {
+
+class MomentumPredictor {
+ public:
+  // `deck` for the linear solvers' tolerance and the solids wall laws; has_temperature: whether
+  // the solids closure defines Θ (for Johnson–Jackson walls).
+  MomentumPredictor(const deck::Deck& deck, const Discretization& discretization,
+                    const SolverSettings& settings, bool has_temperature);
+
+  // An extra gas momentum source [N/m³] at each face velocity of direction d (local_count()
+  // entries, indexed by the owning cell), e.g. a manufactured solution's forcing. Empty: none.
+  void set_gas_source(int d, std::vector<double> source) {
+    m_gas_source[static_cast<std::size_t>(d)] = std::move(source);
+  }
+
+  struct Inputs {
+    const run::FlowState& old;  // the step's start
+    double dt;                  // [s]
+    const ClosureFields& closures;
+    const CarriedFractions& carried;
+    double velocity_scale;            // U of the residual normalization [m/s]
+    bool refresh_wall_coefficients;   // the step's first outer iteration
+  };
+
+  // Solves both phases' component d into `state`, fills the corrections' responses for d, adds
+  // the residuals' local sums and the linear iterations. Returns false if a linear solve failed
+  // (state then holds what the solver returned).
+  bool predict(int d, const Inputs& in, run::FlowState& state, CorrectionResponse& response,
+               IterationSums& sums, WorstCells& worst, StepResult& record);
+
+ private:
+  const Discretization& m_discretization;
+  const SolverSettings& m_settings;
+  std::unique_ptr<SolidsWallCoefficients> m_walls;  // null unless the solids move
+  std::array<std::array<std::unique_ptr<LinearSystem>, 3>, 2> m_systems;  // [phase][d]
+  std::array<std::vector<double>, 3> m_gas_source;
+  std::array<std::vector<MomentumRow>, 2> m_rows;  // scratch, per phase
+  std::array<std::vector<double>, 2> m_x;          // scratch, per phase
+};
+
+}  // namespace bagnold::solver

@@ -1,0 +1,52 @@
+#pragma once
+// Step 1a of the outer iteration: the momentum rows of one phase for one velocity component,
+// before drag, relaxation and partial elimination (momentum_assembly.cpp).
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "solver/discretization.hpp"
+#include "solver/simple/iteration_fields.hpp"
+#include "solver/simple/solids_wall.hpp"
+#include "solver/simple/solver_settings.hpp"
+#include "src/run/flow_state.hpp"
+
+namespace bagnold::solver {
+
+// One assembled momentum row of one phase.
+struct MomentumRow {
+  double a = 0.0;              // diagonal: convection, diffusion, transient
+  double b = 0.0;              // sources: pressure, gravity, transient, TVD correction
+  double neighbours_a = 0.0;   // Σ a_nb
+  double neighbours_u = 0.0;   // Σ a_nb u_nb at the current iterate
+  double transient = 0.0;      // ε ρ V/dt, the part of a from the time derivative
+  double fraction = 0.0;       // ε of the phase at the face velocity
+  double area = 0.0;           // face area normal to the velocity
+  double volume = 0.0;         // control volume of the face velocity
+  bool active = true;          // false: a solids row below the threshold, u_s = 0
+  int count = 0;               // off-diagonal entries
+  std::int64_t columns[6];
+  double values[6];            // −a_nb
+};
+
+// What the assembly reads besides the iterate.
+struct MomentumAssemblyInputs {
+  const Discretization& discretization;
+  const SolverSettings& settings;
+  const run::FlowState& old;  // the step's start
+  double dt;                  // [s]
+  const ClosureFields& closures;
+  const CarriedFractions& carried;
+  // An extra gas momentum source [N/m³] per component (empty: none).
+  const std::array<std::vector<double>, 3>& gas_source;
+};
+
+// Fills `rows` (one per owned unknown face along d, in row order) for `phase` from the iterate
+// `state`. Partial-slip solids walls take c_w from `walls`, re-evaluated when
+// refresh_wall_coefficients (the step's first outer iteration), else as held.
+void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d,
+                            const run::FlowState& state, SolidsWallCoefficients* walls,
+                            bool refresh_wall_coefficients, std::vector<MomentumRow>& rows);
+
+}  // namespace bagnold::solver

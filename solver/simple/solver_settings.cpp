@@ -1,0 +1,38 @@
+// The outer iteration's settings, resolved from the deck once (solver_settings.hpp).
+#include "solver/simple/solver_settings.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace bagnold::solver {
+
+SolverSettings::SolverSettings(const deck::Deck& deck, const parallel::Domain& domain)
+    : moves{deck.gas.enabled, deck.solids.enabled && deck.solids.momentum},
+      drag(deck.solids.enabled && deck.gas.enabled),
+      density{deck.gas.density, deck.solids.material.density},
+      gravity(deck.physics.gravity),
+      tolerance(deck.numerics.tolerance),
+      max_outer_iterations(deck.numerics.max_outer_iterations),
+      relax_velocity(deck.numerics.relax_velocity),
+      relax_pressure(deck.numerics.relax_pressure),
+      simplec(deck.numerics.algorithm == "simplec"),
+      limiter(limiter_from_name(deck.numerics.convection)),
+      residual_normalization(residual_normalization_from_name(deck.numerics.residual_normalization)),
+      net_force_residual(deck.numerics.net_force_residual),
+      bulk_viscosity_ratio(deck.numerics.solids_bulk_viscosity_ratio) {
+  double extent = 0.0, g2 = 0.0;
+  for (int d = 0; d < 3; ++d) {
+    extent = std::max(extent, domain.grid.axis(d).faces().back() - domain.grid.axis(d).faces().front());
+    g2 += gravity[static_cast<std::size_t>(d)] * gravity[static_cast<std::size_t>(d)];
+  }
+  gravity_magnitude = std::sqrt(g2);
+  reference_speed = std::sqrt(gravity_magnitude * extent);
+  for (const auto& region : domain.regions.regions)
+    for (int d = 0; d < 3; ++d)
+      reference_speed = std::max({reference_speed, std::abs(region.wall_velocity[static_cast<std::size_t>(d)]),
+                                  std::abs(region.gas_velocity[static_cast<std::size_t>(d)]),
+                                  std::abs(region.solids_velocity[static_cast<std::size_t>(d)])});
+  if (reference_speed <= 0.0) reference_speed = 1.0;
+}
+
+}  // namespace bagnold::solver

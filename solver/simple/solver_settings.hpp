@@ -1,0 +1,37 @@
+#pragma once
+// The part of the deck the outer iteration reads, resolved once: which phases move, their
+// densities, gravity, the iteration's controls and the reference speed residuals are judged
+// against. Each step takes what it needs from here, not from the deck.
+
+#include <array>
+
+#include "solver/convection_limiter.hpp"
+#include "solver/simple/momentum_residual.hpp"
+#include "src/deck/deck.hpp"
+#include "src/parallel/domain.hpp"
+
+namespace bagnold::solver {
+
+struct SolverSettings {
+  SolverSettings(const deck::Deck& deck, const parallel::Domain& domain);
+
+  std::array<bool, 2> moves{false, false};  // whether each phase's momentum is solved
+  bool drag = false;                        // both phases present: β couples them
+  std::array<double, 2> density{0.0, 0.0};  // ρ_g, ρ_s [kg/m³]
+  std::array<double, 3> gravity{0, 0, 0};   // g [m/s²]
+  double gravity_magnitude = 0.0;           // |g| [m/s²]
+  // The fastest boundary velocity, or the free-fall speed sqrt(|g| L) over the domain [m/s].
+  double reference_speed = 1.0;
+
+  double tolerance = 1e-4;  // numerics.tolerance
+  int max_outer_iterations = 40;
+  double relax_velocity = 0.7;  // α_u
+  double relax_pressure = 1.0;  // α_p
+  bool simplec = true;
+  Limiter limiter = Limiter::superbee;
+  ResidualNormalization residual_normalization = ResidualNormalization::velocity_scale;
+  bool net_force_residual = false;
+  double bulk_viscosity_ratio = 0.0;  // numerics.solids_bulk_viscosity_ratio: λ_s = r μ_s
+};
+
+}  // namespace bagnold::solver

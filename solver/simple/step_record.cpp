@@ -1,0 +1,61 @@
+// Residual bookkeeping of the outer iteration (step_record.hpp).
+#include "solver/simple/step_record.hpp"
+
+#include <cmath>
+
+namespace bagnold::solver {
+
+const char* equation_name(int equation) {
+  static const char* names[equation_count] = {
+      "gas x momentum",    "gas y momentum",    "gas z momentum",      "solids x momentum",
+      "solids y momentum", "solids z momentum", "mixture continuity", "solids continuity"};
+  return equation >= 0 && equation < equation_count ? names[equation] : "unknown equation";
+}
+
+const char* intervention_name(int intervention) {
+  static const char* names[intervention_count] = {
+      "limit_compression", "limit_zero_fraction", "limit_negative_stiffness",
+      "limit_velocity_scale_cap", "limit_velocity_scale_floor"};
+  return names[intervention];
+}
+
+const char* linear_system_name(int kind) {
+  static const char* names[linear_system_count] = {
+      "linear_iterations_momentum", "linear_iterations_pressure", "linear_iterations_fraction"};
+  return names[kind];
+}
+
+double Residuals::largest() const { return value[static_cast<std::size_t>(worst())]; }
+
+int Residuals::worst() const {
+  int worst = 0;
+  for (int e = 1; e < equation_count; ++e)
+    if (!(value[static_cast<std::size_t>(e)] <= value[static_cast<std::size_t>(worst)])) worst = e;
+  return worst;
+}
+
+void IterationSums::reduce(const parallel::Communicator& comm) {
+  // One contiguous buffer, one Allreduce: 6 × 4 momentum sums, 2 × 2 continuity sums, counters.
+  constexpr std::size_t count = 6 * MomentumResidual::Sums::size + 4 + intervention_count;
+  std::array<double, count> buffer{};
+  std::size_t k = 0;
+  for (auto& m : momentum)
+    for (double& v : m.values) buffer[k++] = v;
+  for (auto& c : continuity)
+    for (double& v : c) buffer[k++] = v;
+  for (double& v : interventions) buffer[k++] = v;
+  comm.sum_in_place(buffer.data(), count);
+  k = 0;
+  for (auto& m : momentum)
+    for (double& v : m.values) v = buffer[k++];
+  for (auto& c : continuity)
+    for (double& v : c) v = buffer[k++];
+  for (double& v : interventions) v = buffer[k++];
+}
+
+void WorstCells::reset(int equation) {
+  m_value[static_cast<std::size_t>(equation)] = 0.0;
+  m_local[static_cast<std::size_t>(equation)] = -1;
+}
+
+}  // namespace bagnold::solver

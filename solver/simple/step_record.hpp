@@ -1,0 +1,94 @@
+#pragma once
+// What one outer iteration records besides the new iterate: the local partial sums of every
+// residual (reduced over the ranks in one Allreduce at the end of the iteration), where each
+// equation's residual is largest, how often a numerical limiter changed a value, and the
+// linear solvers' iteration counts. StepResult carries the sums of a step to the monitor.
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <string>
+
+#include "solver/simple/momentum_residual.hpp"
+#include "src/grid/structured_grid.hpp"
+#include "src/parallel/communicator.hpp"
+
+namespace bagnold::solver {
+
+// The equations whose residuals a step watches, in this order.
+enum Equation : int {
+  gas_momentum_x, gas_momentum_y, gas_momentum_z,
+  solids_momentum_x, solids_momentum_y, solids_momentum_z,
+  mixture_continuity, solids_continuity,
+  equation_count
+};
+const char* equation_name(int equation);
+inline int momentum_equation(int phase, int d) { return (phase == 0 ? gas_momentum_x : solids_momentum_x) + d; }
+
+struct Residuals {
+  std::array<double, equation_count> value{};  // normalized, per Equation
+  double largest() const;
+  int worst() const;  // the Equation with the largest (NaN counts as largest)
+};
+
+// Each numerical limiter that can change a value in an outer iteration, counted per cell (or
+// per iteration for the velocity scale) each time it acts. The monitor has a column for each.
+enum Intervention : int {
+  compression_damped,        // limit_compression halved a compressing ε' (cells)
+  fraction_clamped_at_zero,  // a correction would have made ε_s negative (cells)
+  negative_stiffness,        // dP_s/dε_s < 0 kept explicit in e (unknown faces)
+  velocity_scale_capped,     // the residual velocity scale held at 10× the step start's (iterations)
+  velocity_scale_floored,    // the residual velocity scale raised to 1e-3 of the reference speed (iterations)
+  intervention_count
+};
+const char* intervention_name(int intervention);  // the monitor column
+
+// The linear systems of an outer iteration.
+enum LinearSystemKind : int { momentum_systems, pressure_system, fraction_system, linear_system_count };
+const char* linear_system_name(int kind);  // the monitor column
+
+// Local partial sums of one outer iteration; reduce() adds them over the ranks at once.
+struct IterationSums {
+  std::array<MomentumResidual::Sums, 6> momentum{};      // per momentum Equation
+  std::array<MomentumResidual, 6> normalization{};       // how each turns into a residual
+  std::array<std::array<double, 2>, 2> continuity{};     // mixture, solids: {Σ|R|, Σ ½|Q|}
+  std::array<double, intervention_count> interventions{};
+  void reduce(const parallel::Communicator& comm);
+};
+
+// Where an equation's residual is largest: for the message when a run cannot continue.
+struct CellLocation {
+  grid::Index3 cell{0, 0, 0};
+  std::array<double, 3> position{0, 0, 0};  // cell centre [m]
+};
+
+// The local cell of each equation's largest row residual in the current outer iteration.
+class WorstCells {
+ public:
+  void reset(int equation);
+  void record(int equation, double row_residual, int local) {
+    const auto e = static_cast<std::size_t>(equation);
+    if (!(row_residual <= m_value[e])) {  // NaN is the worst
+      m_value[e] = row_residual != row_residual ? INFINITY : row_residual;
+      m_local[e] = local;
+    }
+  }
+  double value(int equation) const { return m_value[static_cast<std::size_t>(equation)]; }
+  int local(int equation) const { return m_local[static_cast<std::size_t>(equation)]; }
+
+ private:
+  std::array<double, equation_count> m_value{};
+  std::array<int, equation_count> m_local{};
+};
+
+struct StepResult {
+  bool converged = false;
+  int iterations = 0;
+  Residuals residuals;  // of the last outer iteration
+  // Summed over the step's outer iterations and all ranks.
+  std::array<double, intervention_count> interventions{};
+  std::array<double, linear_system_count> linear_iterations{};
+  std::string failure;  // why the step stopped early (a linear solve that failed), else empty
+};
+
+}  // namespace bagnold::solver

@@ -34,4 +34,39 @@ Discretization::Discretization(const parallel::Domain& domain) : m_domain(domain
   m_smallest_width = smallest;
 }
 
+SparsityPattern Discretization::momentum_pattern(int d) const {
+  const auto& numbering = velocity_numbering(d);
+  const auto& links = faces(gas).links[static_cast<std::size_t>(d)];
+  SparsityPattern pattern;
+  for (const int l : numbering.owned_locals) {
+    std::int64_t columns[7];
+    int count = 0;
+    for (int face = 0; face < 6; ++face) {
+      const Link& link = links[6 * static_cast<std::size_t>(l) + static_cast<std::size_t>(face)];
+      if (link.kind == LinkKind::unknown) columns[count++] = numbering.global[static_cast<std::size_t>(link.local)];
+    }
+    columns[count++] = numbering.global[static_cast<std::size_t>(l)];
+    pattern.add_row(columns, count);
+  }
+  return pattern;
+}
+
+SparsityPattern Discretization::cell_pattern(Phase phase) const {
+  const auto& numbering = cell_numbering();
+  const auto& kind = faces(phase).kind;
+  SparsityPattern pattern;
+  for (const int l : numbering.owned_locals) {
+    std::int64_t columns[7];
+    int count = 0;
+    for_each_cell_face(*this, l, [&](const CellFace& f) {
+      if (kind[static_cast<std::size_t>(f.direction)][static_cast<std::size_t>(f.owner)] != FaceClass::unknown) return;
+      if (layout().kind(f.neighbour) == grid::CellKind::fluid)
+        columns[count++] = numbering.global[static_cast<std::size_t>(f.neighbour)];
+    });
+    columns[count++] = numbering.global[static_cast<std::size_t>(l)];
+    pattern.add_row(columns, count);
+  }
+  return pattern;
+}
+
 }  // namespace bagnold::solver

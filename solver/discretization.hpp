@@ -19,6 +19,7 @@
 #include <array>
 #include <memory>
 
+#include "solver/sparsity_pattern.hpp"
 #include "solver/unknown_numbering.hpp"
 #include "solver/velocity_faces.hpp"
 #include "src/parallel/domain.hpp"
@@ -46,6 +47,12 @@ class Discretization {
   // Unknown face velocities along d (the same for both phases), and fluid cells.
   const UnknownNumbering& velocity_numbering(int d) const { return *m_velocity_numbering[static_cast<std::size_t>(d)]; }
   const UnknownNumbering& cell_numbering() const { return *m_cell_numbering; }
+
+  // The nonzero patterns of the linear systems: a velocity component's momentum rows (its
+  // unknown neighbours and itself), and a cell-centred correction's rows (its fluid neighbours
+  // across unknown faces of `phase`, and itself).
+  SparsityPattern momentum_pattern(int d) const;
+  SparsityPattern cell_pattern(Phase phase) const;
 
   // Σ over all ranks' fluid cells of ½ Σ_faces A [m²]: the area a velocity scale is carried
   // through when a continuity residual is normalized.

@@ -4,34 +4,21 @@
 
 namespace bagnold::solver {
 
-namespace {
 using grid::CellKind;
 
-// Component d of the velocity at the centre of local cell l (needs its − neighbour along d).
-double centred(const parallel::Layout& layout, const std::vector<double>& face_velocity, int l,
-               int d) {
-  const int minus = layout.neighbour(l, 2 * d);
-  const double lower = minus >= 0 ? face_velocity[static_cast<std::size_t>(minus)] : 0.0;
-  return 0.5 * (face_velocity[static_cast<std::size_t>(l)] + lower);
-}
-}  // namespace
-
-void compute_strain_rate(const parallel::Domain& domain,
+void compute_strain_rate(const Discretization& discretization,
                          const std::array<std::vector<double>, 3>& velocity,
                          std::vector<double>& strain_rate, std::vector<double>& divergence,
                          const std::vector<bool>& no_slip_regions) {
-  const auto& layout = domain.layout;
-  const auto& g = domain.grid;
+  const auto& layout = discretization.layout();
   const auto local = static_cast<std::size_t>(layout.local_count());
   strain_rate.assign(local, 0.0);
   divergence.assign(local, 0.0);
   for (int l = 0; l < layout.owned_fluid_count(); ++l) {
-    const auto ijk = layout.index3(l);
     double gradient[3][3] = {};  // gradient[a][b] = ∂u_a/∂x_b
     for (int b = 0; b < 3; ++b) {
       const int minus = layout.neighbour(l, 2 * b), plus = layout.neighbour(l, 2 * b + 1);
-      const auto& axis = g.axis(b);
-      const double width = axis.width(ijk[static_cast<std::size_t>(b)]);
+      const double width = discretization.width(l, b);
       // What each side contributes: a fluid neighbour its centre value, half the two widths
       // away (periodic wrap: a width away); a stationary no-slip wall flagged in no_slip_regions
       // the ghost value −u_c a width away (the wall's zero half a cell away, as MFIX's ghost
@@ -46,7 +33,7 @@ void compute_strain_rate(const parallel::Domain& domain,
         return region >= 0 && no_slip_regions[static_cast<std::size_t>(region)] ? Side::wall : Side::none;
       };
       auto distance = [&](Side side, int neighbour) {
-        return side == Side::fluid ? 0.5 * (width + axis.width(layout.index3(neighbour)[static_cast<std::size_t>(b)]))
+        return side == Side::fluid ? 0.5 * (width + discretization.width(neighbour, b))
                : side == Side::wall ? width : 0.0;
       };
       const Side lower_side = side_of(minus), upper_side = side_of(plus);
@@ -55,9 +42,9 @@ void compute_strain_rate(const parallel::Domain& domain,
       for (int a = 0; a < 3; ++a) {
         if (a == b) continue;
         const auto& u = velocity[static_cast<std::size_t>(a)];
-        const double own = centred(layout, u, l, a);
+        const double own = centre_velocity(layout, u, l, a);
         auto value = [&](Side side, int neighbour) {
-          return side == Side::fluid ? centred(layout, u, neighbour, a) : side == Side::wall ? -own : own;
+          return side == Side::fluid ? centre_velocity(layout, u, neighbour, a) : side == Side::wall ? -own : own;
         };
         gradient[a][b] = (value(upper_side, plus) - value(lower_side, minus)) / span;
       }
@@ -66,7 +53,7 @@ void compute_strain_rate(const parallel::Domain& domain,
       const int minus = layout.neighbour(l, 2 * a);
       const auto& u = velocity[static_cast<std::size_t>(a)];
       const double lower = minus >= 0 ? u[static_cast<std::size_t>(minus)] : 0.0;
-      gradient[a][a] = (u[static_cast<std::size_t>(l)] - lower) / g.axis(a).width(ijk[static_cast<std::size_t>(a)]);
+      gradient[a][a] = (u[static_cast<std::size_t>(l)] - lower) / discretization.width(l, a);
     }
     double d_double_dot_d = 0.0;
     for (int a = 0; a < 3; ++a)

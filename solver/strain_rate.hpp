@@ -1,7 +1,8 @@
 #pragma once
 // The strain-rate invariants the solids-stress closures need, at cell centres, from staggered
 // face velocities (issue 4, step 1 of the outer iteration):
-//   cell-centred velocity  u_c = ½ (U_east + U_west) (likewise v, w), exact for linear fields;
+//   cell-centred velocity  u_c = ½ (U_east + U_west) (likewise v, w; centre_velocity in
+//   discretization.hpp), exact for linear fields;
 //   ∇u by central differences of the cell-centred velocities between the two face neighbours,
 //   one-sided where a neighbour is not fluid, zero where neither is; where it is a boundary cell
 //   of a region flagged in no_slip_regions (a stationary no-slip solids wall; empty: none), the
@@ -13,11 +14,11 @@
 #include <array>
 #include <vector>
 
-#include "src/parallel/domain.hpp"
+#include "solver/discretization.hpp"
 
 namespace bagnold::solver {
 
-void compute_strain_rate(const parallel::Domain& domain,
+void compute_strain_rate(const Discretization& discretization,
                          const std::array<std::vector<double>, 3>& velocity,
                          std::vector<double>& strain_rate, std::vector<double>& divergence,
                          const std::vector<bool>& no_slip_regions = {});

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace bagnold::solver {
 
@@ -19,38 +20,44 @@ void PetscSession::add_options(const std::string& options) {
   if (log_view) petsc_check(PetscLogDefaultBegin(), "PetscLogDefaultBegin");
 }
 
-LinearSystem::LinearSystem(MPI_Comm comm, std::int64_t rows, std::int64_t first_row,
+LinearSystem::LinearSystem(MPI_Comm comm, const SparsityPattern& pattern, std::int64_t first_row,
                            const std::string& prefix, const KrylovSettings& settings)
-    : m_comm(comm), m_rows(rows), m_first_row(first_row), m_prefix(prefix), m_settings(settings) {
-  const auto n = static_cast<PetscInt>(rows);
-  // At most 7 nonzeros per row (a cell and its 6 face neighbours) on and off the diagonal block.
-  petsc_check(MatCreateAIJ(comm, n, n, PETSC_DETERMINE, PETSC_DETERMINE, 7, nullptr, 7, nullptr,
-                           m_matrix.out()), "MatCreateAIJ");
-  petsc_check(MatSetOption(m_matrix.get(), MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_FALSE),
-              "MatSetOption");
+    : m_comm(comm), m_rows(pattern.rows()), m_first_row(first_row), m_pattern(pattern),
+      m_values(pattern.columns.size(), 0.0), m_rhs_values(static_cast<std::size_t>(m_rows), 0.0),
+      m_prefix(prefix), m_settings(settings) {
+  const auto n = static_cast<PetscInt>(m_rows);
+  petsc_check(MatCreate(comm, m_matrix.out()), "MatCreate");
+  petsc_check(MatSetSizes(m_matrix.get(), n, n, PETSC_DETERMINE, PETSC_DETERMINE), "MatSetSizes");
+  petsc_check(MatSetType(m_matrix.get(), MATAIJ), "MatSetType");
+  std::vector<PetscInt> row_index(pattern.columns.size()), column_index(pattern.columns.size());
+  for (std::int64_t r = 0; r < m_rows; ++r)
+    for (auto k = pattern.offsets[static_cast<std::size_t>(r)]; k < pattern.offsets[static_cast<std::size_t>(r) + 1]; ++k) {
+      row_index[static_cast<std::size_t>(k)] = static_cast<PetscInt>(first_row + r);
+      column_index[static_cast<std::size_t>(k)] = static_cast<PetscInt>(pattern.columns[static_cast<std::size_t>(k)]);
+    }
+  petsc_check(MatSetPreallocationCOO(m_matrix.get(), static_cast<PetscCount>(row_index.size()),
+                                     row_index.data(), column_index.data()),
+              "MatSetPreallocationCOO");
   petsc_check(MatCreateVecs(m_matrix.get(), m_solution.out(), m_rhs.out()), "MatCreateVecs");
   create_ksp();
 }
 
 void LinearSystem::set_row(std::int64_t row, const std::int64_t* columns, const double* values,
                            int count, double rhs) {
-  PetscInt r = static_cast<PetscInt>(row);
-  PetscInt cols[8];
-  PetscScalar vals[8];
-  int used = 0;
+  const auto r = static_cast<std::size_t>(row - m_first_row);
+  const auto begin = static_cast<std::size_t>(m_pattern.offsets[r]);
+  const auto width = static_cast<std::size_t>(m_pattern.offsets[r + 1]) - begin;
+  const std::int64_t* pattern = m_pattern.columns.data() + begin;
+  double* slots = m_values.data() + begin;
+  bool set[8] = {false, false, false, false, false, false, false, false};
   for (int i = 0; i < count; ++i) {
-    const auto c = static_cast<PetscInt>(columns[i]);
-    int j = 0;
-    while (j < used && cols[j] != c) ++j;
-    if (j == used) {
-      cols[used] = c;
-      vals[used++] = values[i];
-    } else {
-      vals[j] += values[i];
-    }
+    std::size_t j = 0;
+    while (j < width && pattern[j] != columns[i]) ++j;
+    if (j == width) throw std::logic_error("LinearSystem::set_row: an entry outside the sparsity pattern");
+    slots[j] = set[j] ? slots[j] + values[i] : values[i];
+    set[j] = true;
   }
-  petsc_check(MatSetValues(m_matrix.get(), 1, &r, used, cols, vals, INSERT_VALUES), "MatSetValues");
-  petsc_check(VecSetValue(m_rhs.get(), r, rhs, INSERT_VALUES), "VecSetValue");
+  m_rhs_values[r] = rhs;
 }
 
 void LinearSystem::create_ksp() {
@@ -76,10 +83,11 @@ void LinearSystem::reuse_preconditioner(bool reuse) {
 }
 
 SolveReport LinearSystem::solve(std::vector<double>& x) {
-  petsc_check(MatAssemblyBegin(m_matrix.get(), MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
-  petsc_check(MatAssemblyEnd(m_matrix.get(), MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
-  petsc_check(VecAssemblyBegin(m_rhs.get()), "VecAssemblyBegin");
-  petsc_check(VecAssemblyEnd(m_rhs.get()), "VecAssemblyEnd");
+  petsc_check(MatSetValuesCOO(m_matrix.get(), m_values.data(), INSERT_VALUES), "MatSetValuesCOO");
+  PetscScalar* rhs = nullptr;
+  petsc_check(VecGetArray(m_rhs.get(), &rhs), "VecGetArray");
+  std::copy(m_rhs_values.begin(), m_rhs_values.end(), rhs);
+  petsc_check(VecRestoreArray(m_rhs.get(), &rhs), "VecRestoreArray");
   if (!m_assembled_once && m_settings.constant_null_space) {
     PetscNullSpace null_space;
     petsc_check(MatNullSpaceCreate(m_comm, PETSC_TRUE, 0, nullptr, null_space.out()),

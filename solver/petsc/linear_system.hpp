@@ -1,7 +1,9 @@
 #pragma once
 // A distributed sparse linear system A x = b, assembled row by row with global indices and
-// solved with a PETSc KSP. The matrix keeps its nonzero pattern between assemblies, so an outer
-// iteration re-fills it without reallocating. Each system has an options prefix ("momentum_",
+// solved with a PETSc KSP. The nonzero pattern is given once, exactly (PETSc's COO
+// preallocation; an entry outside it is an error), and each assembly fills a value array in
+// that pattern's order, handed to PETSc in one MatSetValuesCOO call, so an outer iteration
+// re-fills the matrix without searching or reallocating. Each system has an options prefix ("momentum_",
 // "pressure_") so PETSc command-line options tune it alone; options given in code are defaults
 // that the command line overrides.
 
@@ -10,6 +12,7 @@
 #include <vector>
 
 #include "solver/petsc/handle.hpp"
+#include "solver/sparsity_pattern.hpp"
 
 namespace bagnold::solver {
 
@@ -31,11 +34,13 @@ struct SolveReport {
 
 class LinearSystem {
  public:
-  // `rows`: rows owned by this rank (contiguous global block starting at `first_row`).
-  LinearSystem(MPI_Comm comm, std::int64_t rows, std::int64_t first_row, const std::string& prefix,
-               const KrylovSettings& settings);
+  // `pattern`: the rows owned by this rank (contiguous global block starting at `first_row`).
+  LinearSystem(MPI_Comm comm, const SparsityPattern& pattern, std::int64_t first_row,
+               const std::string& prefix, const KrylovSettings& settings);
 
-  // One row: global column indices (duplicates are summed) and values; and its right-hand side.
+  // One row: global column indices within its pattern (duplicates are summed, in the order
+  // given) and values; and its right-hand side. Throws std::logic_error for a column outside
+  // the pattern.
   void set_row(std::int64_t row, const std::int64_t* columns, const double* values, int count,
                double rhs);
   // Keep the preconditioner built for an earlier matrix (e.g. within one time step, where the
@@ -50,6 +55,9 @@ class LinearSystem {
   MPI_Comm m_comm;
   std::int64_t m_rows;
   std::int64_t m_first_row;
+  SparsityPattern m_pattern;
+  std::vector<double> m_values;  // in the pattern's order
+  std::vector<double> m_rhs_values;
   std::string m_prefix;
   KrylovSettings m_settings;
   PetscMat m_matrix;

@@ -49,7 +49,7 @@ StepResult FlowSolver::advance(run::FlowState& state, const run::FlowState& old,
   // BAGNOLD_TRACE=1: every outer iteration's residuals and the cell of the largest, on stderr.
   const bool trace = std::getenv("BAGNOLD_TRACE") != nullptr;
   const auto& comm = m_discretization.layout().comm();
-  const double largest_scale = 10.0 * residual_velocity_scale(old, INFINITY, nullptr);
+  const double largest_scale = scale_growth_cap * residual_velocity_scale(old, INFINITY, nullptr);
   if (m_pressure) m_pressure->start_step();
   for (int iteration = 1; iteration <= m_settings.max_outer_iterations; ++iteration) {
     IterationSums sums;

@@ -70,7 +70,7 @@ void Closures::evaluate_solids_stress(const Discretization& discretization, run:
     fields.viscosity[gas][static_cast<std::size_t>(l)] = state.gas_fraction[static_cast<std::size_t>(l)] * m_gas_viscosity;
   if (!m_stress) return;
 
-  compute_strain_rate(discretization.domain(), state.solids_velocity, fields.strain_rate,
+  compute_strain_rate(discretization, state.solids_velocity, fields.strain_rate,
                       fields.divergence, m_wall_shear_regions);
   const double weight = m_relaxation_time > 0.0 ? dt / m_relaxation_time : 0.0;
   m_cells.clear();

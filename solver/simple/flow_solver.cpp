@@ -30,7 +30,7 @@ double FlowSolver::residual_velocity_scale(const run::FlowState& state, double c
       for (int l = 0; l < layout.owned_count(); ++l)
         largest = std::max(largest, std::abs(component[static_cast<std::size_t>(l)]));
   const double measured = layout.comm().max(largest);
-  const double floor = 1e-3 * m_settings.reference_speed;
+  const double floor = m_settings.least_speed;
   const double scale = std::max(measured, floor);
   if (sums && measured < floor) sums->interventions[velocity_scale_floored] = 1.0;
   if (sums && scale > cap) sums->interventions[velocity_scale_capped] = 1.0;

@@ -82,11 +82,12 @@ class FlowSolver {
   };
 
   // The velocity residuals are measured against: the largest face velocity in the domain, but at
-  // least 1e-3 of the problem's reference speed (the fastest wall or inflow, or sqrt(|g| L)), so
-  // that a fluid at rest is judged against a meaningful scale rather than round-off; and at
+  // least SolverSettings::least_speed (1e-3 of the reference speed: the fastest wall or inflow,
+  // or sqrt(|g| L)); and at
   // most `cap` (10× the step start's), so that an iterate that blows up cannot make its own
   // residuals look small and be accepted. Counts the floor and the cap in `sums`.
   double residual_velocity_scale(const run::FlowState& state, double cap, IterationSums* sums) const;
+  static constexpr double scale_growth_cap = 10.0;  // the cap, of the step start's scale
   // One outer iteration; false if a linear solve failed.
   bool iterate(run::FlowState& state, const run::FlowState& old, double dt, bool first,
                double velocity_scale, IterationSums& sums, StepResult& result);

@@ -45,9 +45,10 @@ void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d
   auto at = [&](int local) { return u[static_cast<std::size_t>(local)]; };
   auto viscosity = [&](int local) { return local >= 0 ? mu[static_cast<std::size_t>(local)] : 0.0; };
 
-  rows.assign(numbering.owned_locals.size(), MomentumRow{});
+  rows.resize(numbering.owned_locals.size());
   for (std::size_t r = 0; r < numbering.owned_locals.size(); ++r) {
     MomentumRow& row = rows[r];
+    row.reset();
     const int l = numbering.owned_locals[r];
     const int n = layout.neighbour(l, 2 * d + 1);
     const double half_c = 0.5 * disc.width(l, d), half_n = 0.5 * disc.width(n, d);

@@ -43,10 +43,11 @@ MomentumPredictor::MomentumPredictor(const deck::Deck& deck, const Discretizatio
                                 {"solids_momentum_x_", "solids_momentum_y_", "solids_momentum_z_"}};
   for (int d = 0; d < 3; ++d) {
     const auto& n = discretization.velocity_numbering(d);
+    const SparsityPattern pattern = discretization.momentum_pattern(d);
     for (const Phase phase : {gas, solids})
       if (settings.moves[phase])
         m_systems[phase][static_cast<std::size_t>(d)] = std::make_unique<LinearSystem>(
-            comm, n.owned_rows(), n.first_row, prefixes[phase][d], krylov);
+            comm, pattern, n.first_row, prefixes[phase][d], krylov);
   }
   if (settings.moves[solids])
     m_walls = std::make_unique<SolidsWallCoefficients>(deck, discretization, has_temperature);
@@ -90,7 +91,7 @@ bool MomentumPredictor::predict(int d, const Inputs& in, run::FlowState& state,
       mean[phase] = n > 0 ? layout.comm().sum(sum[phase]) / n : 0.0;
     }
   }
-  const double least_speed = 1e-3 * settings.reference_speed;
+  const double least_speed = settings.least_speed;
   std::array<MomentumResidual, 2> residual;
   for (const Phase phase : {gas, solids}) {
     residual[phase] = MomentumResidual(settings.residual_normalization, mean[phase], in.velocity_scale,

@@ -7,12 +7,6 @@
 
 namespace bagnold::solver {
 
-ResidualNormalization residual_normalization_from_name(const std::string& name) {
-  if (name == "deviation") return ResidualNormalization::deviation;
-  if (name == "velocity-scale") return ResidualNormalization::velocity_scale;
-  throw std::invalid_argument("unknown residual normalization '" + name + "'");
-}
-
 double MomentumResidual::add(Sums& sums, double diagonal, double operator_u, double operator_one,
                              double source, double transient, double weight) const {
   auto& [residual, norm, net, total_weight] = sums.values;

@@ -23,10 +23,14 @@
 #include <cstddef>
 #include <string>
 
+#include "src/deck/choices.hpp"
+
 namespace bagnold::solver {
 
-enum class ResidualNormalization { deviation, velocity_scale };
-ResidualNormalization residual_normalization_from_name(const std::string& name);
+using ResidualNormalization = deck::ResidualNormalization;  // named in deck::residual_normalization_choices
+inline ResidualNormalization residual_normalization_from_name(const std::string& name) {
+  return deck::choice_value(deck::residual_normalization_choices, name, "residual normalization");
+}
 
 // With numerics.net_force_residual the value is at least |Σ (s − L u)| / Σ ε ρ V |g|: the force
 // the iterate leaves unbalanced on the whole phase, against its weight. Exchange between rows

@@ -14,8 +14,15 @@
 
 namespace bagnold::solver {
 
-// One assembled momentum row of one phase.
+// One assembled momentum row of one phase. reset() clears what an assembly accumulates (the
+// entries are written before they are read), so refilling a row costs no more than filling it.
 struct MomentumRow {
+  void reset() {
+    a = b = neighbours_a = neighbours_u = transient = fraction = area = volume = 0.0;
+    active = true;
+    count = 0;
+  }
+
   double a = 0.0;              // diagonal: convection, diffusion, transient
   double b = 0.0;              // sources: pressure, gravity, transient, TVD correction
   double neighbours_a = 0.0;   // Σ a_nb

@@ -28,8 +28,8 @@ PressureCorrection::PressureCorrection(const deck::Deck& deck, const Discretizat
   pressure.pc_type = deck.numerics.pressure_preconditioner;
   pressure.relative_tolerance = deck.numerics.pressure_tolerance;
   pressure.constant_null_space = !discretization.faces(gas).has_pressure_boundary;
-  m_system = std::make_unique<LinearSystem>(discretization.layout().comm().get(), numbering.owned_rows(),
-                                            numbering.first_row, "pressure_", pressure);
+  m_system = std::make_unique<LinearSystem>(discretization.layout().comm().get(),
+                                            discretization.cell_pattern(gas), numbering.first_row, "pressure_", pressure);
   m_x.resize(static_cast<std::size_t>(numbering.owned_rows()));
   m_correction.resize(static_cast<std::size_t>(discretization.layout().local_count()));
 }

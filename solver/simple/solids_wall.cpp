@@ -28,14 +28,15 @@ double solids_packing_limit(const deck::Deck& deck) {
   return models::chialvo2012::critical_fraction(deck.solids.material.friction);
 }
 
-SolidsWalls::SolidsWalls(const deck::Deck& deck, const std::vector<deck::BoundaryRegion>& regions,
+SolidsWalls::SolidsWalls(const deck::Deck& deck, const grid::BoundaryRegions& regions,
                          bool has_temperature)
     : m_material(deck.solids.material), m_has_temperature(has_temperature) {
-  m_laws.resize(regions.size());
-  for (std::size_t r = 0; r < regions.size(); ++r) {
-    const auto& region = regions[r];
+  m_laws.resize(regions.regions.size());
+  for (std::size_t r = 0; r < regions.regions.size(); ++r) {
+    const auto& region = regions.regions[r];
     Law& law = m_laws[r];
-    if (region.type != "no_slip_wall" && region.type != "moving_wall") continue;
+    const auto type = regions.types[r];
+    if (type != grid::BoundaryType::no_slip_wall && type != grid::BoundaryType::moving_wall) continue;
     if (region.solids_wall == "free-slip") {
       law.kind = Kind::free_slip;
     } else if (region.solids_wall == "johnson-jackson") {
@@ -78,7 +79,7 @@ double SolidsWalls::coefficient(int region, const NearWallSolids& near, double w
 SolidsWallCoefficients::SolidsWallCoefficients(const deck::Deck& deck,
                                                const Discretization& discretization,
                                                bool has_temperature)
-    : m_walls(deck, discretization.domain().regions.regions, has_temperature) {
+    : m_walls(deck, discretization.domain().regions, has_temperature) {
   if (m_walls.any_partial())
     for (auto& held : m_held) held.assign(6 * static_cast<std::size_t>(discretization.layout().local_count()), 0.0);
 }

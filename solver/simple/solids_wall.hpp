@@ -43,8 +43,7 @@ class SolidsWalls {
   // One law per region of `regions` (the deck's [[boundary]] and the implicit "walls").
   // `has_temperature`: whether the closure defines Θ. Throws std::invalid_argument where a
   // law's limits are violated (the deck loader reports these first).
-  SolidsWalls(const deck::Deck& deck, const std::vector<deck::BoundaryRegion>& regions,
-              bool has_temperature);
+  SolidsWalls(const deck::Deck& deck, const grid::BoundaryRegions& regions, bool has_temperature);
 
   // Whether region r (-1: none) has a solids law other than no-slip.
   bool partial(int region) const {

@@ -15,7 +15,8 @@ SolverSettings::SolverSettings(const deck::Deck& deck, const parallel::Domain& d
       max_outer_iterations(deck.numerics.max_outer_iterations),
       relax_velocity(deck.numerics.relax_velocity),
       relax_pressure(deck.numerics.relax_pressure),
-      simplec(deck.numerics.algorithm == "simplec"),
+      simplec(deck::choice_value(deck::coupling_choices, deck.numerics.algorithm, "algorithm") ==
+              deck::Coupling::simplec),
       limiter(limiter_from_name(deck.numerics.convection)),
       residual_normalization(residual_normalization_from_name(deck.numerics.residual_normalization)),
       net_force_residual(deck.numerics.net_force_residual),
@@ -33,6 +34,7 @@ SolverSettings::SolverSettings(const deck::Deck& deck, const parallel::Domain& d
                                   std::abs(region.gas_velocity[static_cast<std::size_t>(d)]),
                                   std::abs(region.solids_velocity[static_cast<std::size_t>(d)])});
   if (reference_speed <= 0.0) reference_speed = 1.0;
+  least_speed = 1e-3 * reference_speed;
 }
 
 }  // namespace bagnold::solver

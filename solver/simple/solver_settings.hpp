@@ -22,6 +22,9 @@ struct SolverSettings {
   double gravity_magnitude = 0.0;           // |g| [m/s²]
   // The fastest boundary velocity, or the free-fall speed sqrt(|g| L) over the domain [m/s].
   double reference_speed = 1.0;
+  // The least velocity residuals are judged against [m/s], 1e-3 of the reference speed: a fluid
+  // at rest is then measured against a small velocity change, not against round-off.
+  double least_speed = 1e-3;
 
   double tolerance = 1e-4;  // numerics.tolerance
   int max_outer_iterations = 40;

@@ -31,8 +31,8 @@ VolumeFractionCorrection::VolumeFractionCorrection(const Discretization& discret
   fraction.pc_type = "bjacobi";
   fraction.relative_tolerance = linear_relative_tolerance;
   fraction.absolute_tolerance = linear_absolute_tolerance;
-  m_system = std::make_unique<LinearSystem>(discretization.layout().comm().get(), numbering.owned_rows(),
-                                            numbering.first_row, "solids_fraction_", fraction);
+  m_system = std::make_unique<LinearSystem>(discretization.layout().comm().get(),
+                                            discretization.cell_pattern(solids), numbering.first_row, "solids_fraction_", fraction);
   m_x.resize(static_cast<std::size_t>(numbering.owned_rows()));
   m_correction.resize(static_cast<std::size_t>(discretization.layout().local_count()));
 }

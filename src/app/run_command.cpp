@@ -78,8 +78,13 @@ int run_command(const DeckArguments& args) {
       }
       // The snapshot's next dt, kept within the deck's limits: a restart with a new dt_max or
       // dt_min obeys them from its first step.
+      const double snapshot_dt = start.dt;
       start.dt = std::clamp(start.dt, deck.run.dt_min, deck.run.dt_max);
       say(fmt::format("restart from {} at t = {:.6g} s, step {}", start.snapshot, start.time, start.step));
+      if (start.dt != snapshot_dt)
+        say(fmt::format("restart: the snapshot's next dt {:.3g} s is outside [run.dt_min, run.dt_max] = "
+                        "[{:.3g}, {:.3g}] s; the first step takes {:.3g} s",
+                        snapshot_dt, deck.run.dt_min, deck.run.dt_max, start.dt));
     }
     run::OutputWriter output(deck, domain);
     if (!start.snapshot.empty()) {

@@ -33,7 +33,7 @@ void expect_exact(const std::string& deck_text, const double (&a)[3][3],
   const auto deck = deck::load_deck_text(deck_text, "strain.toml", overrides);
   const parallel::Domain domain(deck, parallel::Communicator());
   std::vector<double> gamma_dot, divergence;
-  solver::compute_strain_rate(domain, linear_field(domain, a), gamma_dot, divergence);
+  solver::compute_strain_rate(solver::Discretization(domain), linear_field(domain, a), gamma_dot, divergence);
   double dd = 0.0;
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) dd += 0.25 * (a[i][j] + a[j][i]) * (a[i][j] + a[j][i]);

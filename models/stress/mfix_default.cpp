@@ -91,6 +91,8 @@ void MfixDefault::evaluate(const Material& material, const SolidsState& in,
   });
 }
 
+double MfixDefault::packing_limit(const Material& /*material*/) const { return 1.0 - m_constants.packed_gas_fraction; }
+
 namespace {
 Constants read_constants(const Coefficients& c) {
   return {.packed_gas_fraction = real_coefficient(c, "packed_gas_fraction"),

@@ -33,6 +33,8 @@ class MfixDefault final : public SolidsStressModel {
   std::string name() const override { return "mfix-default"; }
   void evaluate(const Material& material, const SolidsState& in, SolidsStress& out) const override;
   bool defines_temperature() const override { return true; }
+  // φ_max = 1 − ε_g*: where the plastic regime starts.
+  double packing_limit(const Material& material) const override;
 
  private:
   Constants m_constants;

@@ -116,6 +116,8 @@ void Mkt::evaluate(const Material& material, const SolidsState& in, SolidsStress
   });
 }
 
+double Mkt::packing_limit(const Material& material) const { return chialvo2012::critical_fraction(material.friction); }
+
 namespace {
 Constants read_constants(const Coefficients& c) {
   return {.transition_inertial_number = real_coefficient(c, "i0"),

@@ -72,6 +72,8 @@ class Mkt final : public SolidsStressModel {
   std::string name() const override { return "mkt"; }
   void evaluate(const Material& material, const SolidsState& in, SolidsStress& out) const override;
   bool defines_temperature() const override { return true; }
+  // φ_max = φ_c(μ) of App. A Table I, where g0 is capped (dense_limit.hpp).
+  double packing_limit(const Material& material) const override;
 
  private:
   Constants m_constants;

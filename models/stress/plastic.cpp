@@ -25,6 +25,8 @@ void Plastic::evaluate(const Material& /*material*/, const SolidsState& in, Soli
   });
 }
 
+double Plastic::packing_limit(const Material& /*material*/) const { return 1.0 - m_constants.packed_gas_fraction; }
+
 namespace {
 [[maybe_unused]] const bool registered = stress_registry().add(
     {.name = "plastic",

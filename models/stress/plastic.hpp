@@ -26,6 +26,8 @@ class Plastic final : public SolidsStressModel {
   std::string name() const override { return "plastic"; }
   void evaluate(const Material& material, const SolidsState& in, SolidsStress& out) const override;
   bool defines_temperature() const override { return false; }
+  // φ_max = 1 − ε_g*: where the plastic pressure starts.
+  double packing_limit(const Material& material) const override;
 
  private:
   Constants m_constants;

@@ -66,6 +66,8 @@ void Skt::evaluate(const Material& material, const SolidsState& in, SolidsStress
   });
 }
 
+double Skt::packing_limit(const Material& material) const { return chialvo2012::critical_fraction(material.friction); }
+
 namespace {
 [[maybe_unused]] const bool registered = stress_registry().add(
     {.name = "skt",

@@ -43,6 +43,8 @@ class Skt final : public SolidsStressModel {
   std::string name() const override { return "skt"; }
   void evaluate(const Material& material, const SolidsState& in, SolidsStress& out) const override;
   bool defines_temperature() const override { return true; }
+  // φ_max = φ_c(μ) of App. A Table I, where g0 is capped (dense_limit.hpp).
+  double packing_limit(const Material& material) const override;
 
  private:
   rdf::Kind m_radial;

@@ -45,6 +45,8 @@ void SteadyShear::evaluate(const Material& material, const SolidsState& in,
                                 });
 }
 
+double SteadyShear::packing_limit(const Material& material) const { return chialvo2012::critical_fraction(material.friction); }
+
 namespace {
 Constants read_constants(const Coefficients& c) {
   Constants constants{.inertial = real_coefficient(c, "alpha_inert"),

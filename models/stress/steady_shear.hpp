@@ -34,6 +34,8 @@ class SteadyShear final : public SolidsStressModel {
   std::string name() const override { return "steady-shear"; }
   void evaluate(const Material& material, const SolidsState& in, SolidsStress& out) const override;
   bool defines_temperature() const override { return false; }
+  // φ_max = φ_c(μ) of App. A Table I, the rheology's critical fraction.
+  double packing_limit(const Material& material) const override;
 
  private:
   Constants m_constants;

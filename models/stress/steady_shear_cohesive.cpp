@@ -79,6 +79,8 @@ void SteadyShearCohesive::evaluate(const Material& material, const SolidsState& 
   });
 }
 
+double SteadyShearCohesive::packing_limit(const Material& material) const { return chialvo2012::critical_fraction(material.friction); }
+
 namespace {
 Constants read_constants(const Coefficients& c) {
   Constants constants{.cohesive_onset_fraction = real_coefficient(c, "phi_a"),

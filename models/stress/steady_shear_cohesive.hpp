@@ -38,6 +38,9 @@ class SteadyShearCohesive final : public SolidsStressModel {
   std::string name() const override { return "steady-shear-cohesive"; }
   void evaluate(const Material& material, const SolidsState& in, SolidsStress& out) const override;
   bool defines_temperature() const override { return false; }
+  // φ_c(μ) of App. A Table I, as for steady-shear (what the walls used before the interface
+  // had this call), not App. D Table I's own φ_c: see docs/models.md, "Packing limit".
+  double packing_limit(const Material& material) const override;
 
  private:
   Constants m_constants;

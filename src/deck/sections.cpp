@@ -1,5 +1,7 @@
 #include "src/deck/sections.hpp"
 
+#include "models/wall/wall_law.hpp"
+
 namespace bagnold::deck {
 
 namespace {
@@ -7,8 +9,6 @@ const std::vector<std::string> boundary_types = {"no_slip_wall",     "free_slip_
                                                  "moving_wall",      "pressure_outflow",
                                                  "pressure_inflow",  "mass_inflow"};
 const std::vector<std::string> wall_types = {"no_slip_wall", "free_slip_wall"};
-const std::vector<std::string> solids_wall_conditions = {"no-slip", "free-slip", "johnson-jackson",
-                                                         "dense-slip"};
 }  // namespace
 
 bool Grid::is_periodic(int direction) const {
@@ -120,7 +120,8 @@ const Section<BoundaryRegion>& boundary_section() {
           .doc("mass_inflow: solids velocity."),
       key(&BoundaryRegion::solids_fraction, "solids_fraction").unit("-").init(0.0).within(0.0, 1.0)
           .doc("mass_inflow: solids volume fraction ε_s."),
-      key(&BoundaryRegion::solids_wall, "solids_wall").init("no-slip").one_of(solids_wall_conditions)
+      key(&BoundaryRegion::solids_wall, "solids_wall").init("no-slip")
+          .one_of(models::wall::wall_law_registry().names())
           .doc("no_slip_wall / moving_wall: the solids' tangential wall condition (the gas keeps "
                "`type`): no-slip, free-slip, johnson-jackson (specularity, wall_restitution) or "
                "dense-slip (wall_friction; the report's App. C slip). free_slip_wall is free slip "

@@ -15,6 +15,7 @@
 #include <string>
 
 #include "models/dual.hpp"
+#include "models/rdf/radial_distribution.hpp"
 #include "models/stress/dense_limit.hpp"
 #include "models/stress/dilute_limit.hpp"
 #include "models/stress/regularization.hpp"
@@ -27,7 +28,7 @@ struct Constants {
   double transition_inertial_number = 0.2;  // I_0 [-]
   double dense_slope = 0.36;                // α [-], dense prefactor of I′ in η (Eq. 42)
   double dense_temperature = 0.06;          // α₁ [-], Eq. 27
-  double radial_distribution_scale = 0.58;  // α₂ [-], Eq. 31
+  double radial_distribution_scale = rdf::chialvo_sundaresan_scale;  // α₂ [-], Eq. 31
   double psi_exponent = -2.0 / 3.0;         // exponent of (1 − e²) in ψ, Eq. 32
 };
 

@@ -31,14 +31,14 @@ struct KineticState {
 };
 
 template <class Real>
-KineticState<Real> kinetic_state(Real phi, const Material& material, rdf::Kind radial,
-                                 const DenseLimit& dense);
+KineticState<Real> kinetic_state(Real phi, const Material& material,
+                                 const rdf::RadialDistribution& radial, const DenseLimit& dense);
 
 class Skt final : public SolidsStressModel {
  public:
   // frictional_yield: add the quasi-static yield stress η_s(μ) P_qs of the dense limit (off in
   // the report's SKT, which "does not consider ... the role of frictional contact").
-  Skt(rdf::Kind radial, bool frictional_yield, const DenseLimit& dense, const DiluteLimit& dilute,
+  Skt(const rdf::RadialDistribution& radial, bool frictional_yield, const DenseLimit& dense, const DiluteLimit& dilute,
       const ViscosityLimits& limits);
   std::string name() const override { return "skt"; }
   void evaluate(const Material& material, const SolidsState& in, SolidsStress& out) const override;
@@ -47,7 +47,7 @@ class Skt final : public SolidsStressModel {
   double packing_limit(const Material& material) const override;
 
  private:
-  rdf::Kind m_radial;
+  const rdf::RadialDistribution* m_radial;  // an entry of rdf::radial_distributions()
   bool m_frictional_yield;
   DenseLimit m_dense;
   DiluteLimit m_dilute;

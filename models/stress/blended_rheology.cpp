@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "models/stress/dense_limit.hpp"
+#include "models/stress/onset_smoothing.hpp"
 
 namespace bagnold::models::blended {
 
@@ -89,14 +89,19 @@ std::vector<CoefficientSpec> stress_ratio_specs(const std::string& hard, const s
                                                 const std::string& table) {
   const std::string of_hard = ", " + hard + ", " + table + ".";
   const std::string of_soft = ", " + soft + ", " + table + ".";
+  namespace d = stress_ratio_default;
   return {
-      real_spec("i0", "-", 0.32, 1e-6, 10.0, "I_0 [-]: transition inertial number of η_hard" + of_hard),
-      real_spec("alpha_1", "-", 0.37, 0.0, 10.0, "α₁ [-]: rise of η_hard above η_s" + of_hard),
-      real_spec("beta_1", "-", 1.5, 0.1, 10.0, "β₁ [-]: exponent of η_hard" + of_hard),
-      real_spec("gamma_hat_0", "-", 0.1, 1e-9, 10.0,
+      real_spec("i0", "-", d::transition_inertial_number, 1e-6, 10.0,
+                "I_0 [-]: transition inertial number of η_hard" + of_hard),
+      real_spec("alpha_1", "-", d::hard_rise, 0.0, 10.0,
+                "α₁ [-]: rise of η_hard above η_s" + of_hard),
+      real_spec("beta_1", "-", d::hard_exponent, 0.1, 10.0,
+                "β₁ [-]: exponent of η_hard" + of_hard),
+      real_spec("gamma_hat_0", "-", d::transition_shear_rate, 1e-9, 10.0,
                 "γ̂_0 [-]: transition scaled shear rate of η_soft" + of_soft),
-      real_spec("alpha_2", "-", 0.2, 0.0, 10.0, "α₂ [-]: softness drop of η" + of_soft),
-      real_spec("beta_2", "-", 1.0, 0.1, 10.0, "β₂ [-]: exponent of η_soft" + of_soft),
+      real_spec("alpha_2", "-", d::soft_drop, 0.0, 10.0, "α₂ [-]: softness drop of η" + of_soft),
+      real_spec("beta_2", "-", d::soft_exponent, 0.1, 10.0,
+                "β₂ [-]: exponent of η_soft" + of_soft),
   };
 }
 

@@ -26,10 +26,23 @@
 #include "models/coefficients.hpp"
 #include "models/dual.hpp"
 #include "models/material.hpp"
+#include "models/stress/onset_smoothing.hpp"
 #include "models/stress/pointwise.hpp"
 #include "models/stress/regularization.hpp"
 
 namespace bagnold::models::blended {
+
+// The stress-ratio constants App. A (Eqs. 11–12, Table II) and App. D (Eqs. 14–15, Table I)
+// print with the same values: the defaults of both models' deck keys i0, alpha_1, beta_1,
+// gamma_hat_0, alpha_2, beta_2.
+namespace stress_ratio_default {
+inline constexpr double transition_inertial_number = 0.32;  // I_0 [-]
+inline constexpr double hard_rise = 0.37;                   // α₁ [-]
+inline constexpr double hard_exponent = 1.5;                // β₁ [-]
+inline constexpr double transition_shear_rate = 0.1;        // γ̂_0 [-]
+inline constexpr double soft_drop = 0.2;                    // α₂ [-]
+inline constexpr double soft_exponent = 1.0;                // β₂ [-]
+}  // namespace stress_ratio_default
 
 struct Constants {
   // μ-dependent (from the model's table at the material's μ)
@@ -49,10 +62,12 @@ struct Constants {
   double transition_shear_rate;           // γ̂_0 [-]
   double soft_drop;                       // α₂ [-]
   double soft_exponent;                   // β₂ [-]
-  double cohesive_onset_fraction = 0.45;  // φ_a [-]
-  double cohesive_2 = 0.0;                // α_coh,2 [-]
-  double cohesive_rate = 0.1;             // α₄ [-]
-  double onset_smoothing = 1e-4;  // x_s [-], smoothing of |φ − φ_c|^ε at onset (dense_limit.hpp)
+  // Cohesion (App. D): zero, i.e. none, unless the model sets them (steady_shear_cohesive.hpp
+  // holds their defaults); each multiplies Bo* or is used only where Bo* > 0.
+  double cohesive_onset_fraction = 0.0;  // φ_a [-]
+  double cohesive_2 = 0.0;               // α_coh,2 [-]
+  double cohesive_rate = 0.0;            // α₄ [-]
+  double onset_smoothing;                // x_s [-] at onset of |φ − φ_c|^ε (onset_smoothing.hpp)
 };
 
 // γ̂ = γ̇ d / sqrt(k/(ρ_s d)), App. A Sec. III.

@@ -51,7 +51,7 @@ namespace {
 Constants read_constants(const Coefficients& c) {
   Constants constants{.inertial = real_coefficient(c, "alpha_inert"),
           .intermediate = real_coefficient(c, "alpha_int"),
-          .onset_smoothing = real_coefficient(c, "onset_smoothing")};
+          .onset_smoothing = read_onset_smoothing(c)};
   blended::read_stress_ratio_constants(c, constants);
   return constants;
 }
@@ -66,10 +66,7 @@ Constants read_constants(const Coefficients& c) {
            real_spec("alpha_int", "-", Constants{}.intermediate, 0.0, 10.0,
                      "α_int [-]: intermediate pressure p d/k = α_int γ̂^{1/2}, App. A Eq. 9, "
                      "Table II."),
-           real_spec("onset_smoothing", "-", Constants{}.onset_smoothing, 0.0, 0.1,
-                     "x_s [-]: volume-fraction width over which |φ − φ_c|^{2/3} (App. A Eq. 8) is "
-                     "smoothed (quadratic below x_s) so that dP_s/dε_s is finite at φ_c; 1e-4 "
-                     "makes a packed bed ~100x stiffer (docs/models.md).")},
+           onset_smoothing_spec()},
           blended::stress_ratio_specs("App. A Eq. 11", "App. A Eq. 12", "Table II"),
           DiluteLimit::specs(DiluteLimit::Anchor::tangent),
           ViscosityLimits::specs()}),

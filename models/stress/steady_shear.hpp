@@ -16,13 +16,14 @@ namespace bagnold::models::steady_shear {
 struct Constants {
   double inertial = 0.021;                   // α_inert
   double intermediate = 0.099;               // α_int
-  double transition_inertial_number = 0.32;  // I_0
-  double hard_rise = 0.37;                   // α₁
-  double hard_exponent = 1.5;                // β₁
-  double transition_shear_rate = 0.1;        // γ̂_0
-  double soft_drop = 0.2;                    // α₂
-  double soft_exponent = 1.0;                // β₂
-  double onset_smoothing = 1e-2;             // x_s
+  // I_0, α₁, β₁, γ̂_0, α₂, β₂: the stress-ratio constants both models share.
+  double transition_inertial_number = blended::stress_ratio_default::transition_inertial_number;
+  double hard_rise = blended::stress_ratio_default::hard_rise;                          // α₁
+  double hard_exponent = blended::stress_ratio_default::hard_exponent;                  // β₁
+  double transition_shear_rate = blended::stress_ratio_default::transition_shear_rate;  // γ̂_0
+  double soft_drop = blended::stress_ratio_default::soft_drop;                          // α₂
+  double soft_exponent = blended::stress_ratio_default::soft_exponent;                  // β₂
+  double onset_smoothing = default_onset_smoothing;  // x_s
 };
 
 // The blended constants at friction μ: App. A Tables I–II, ε = 2/3, χ = 2 (Eqs. 8–10).

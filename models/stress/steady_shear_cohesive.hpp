@@ -19,14 +19,15 @@ struct Constants {
   double cohesive_onset_fraction = 0.45;     // φ_a
   double inertial = 0.015;                   // α_inert
   double cohesive_2 = 0.008;                 // α_coh,2
-  double transition_inertial_number = 0.32;  // I_0
-  double hard_rise = 0.37;                   // α₁
-  double hard_exponent = 1.5;                // β₁
-  double transition_shear_rate = 0.1;        // γ̂_0
-  double soft_drop = 0.2;                    // α₂
-  double soft_exponent = 1.0;                // β₂
+  // I_0, α₁, β₁, γ̂_0, α₂, β₂: the stress-ratio constants both models share.
+  double transition_inertial_number = blended::stress_ratio_default::transition_inertial_number;
+  double hard_rise = blended::stress_ratio_default::hard_rise;                          // α₁
+  double hard_exponent = blended::stress_ratio_default::hard_exponent;                  // β₁
+  double transition_shear_rate = blended::stress_ratio_default::transition_shear_rate;  // γ̂_0
+  double soft_drop = blended::stress_ratio_default::soft_drop;                          // α₂
+  double soft_exponent = blended::stress_ratio_default::soft_exponent;                  // β₂
   double cohesive_rate = 0.1;                // α₄
-  double onset_smoothing = 1e-4;             // x_s
+  double onset_smoothing = default_onset_smoothing;  // x_s
 };
 
 // The blended constants at friction μ from App. D Table I.

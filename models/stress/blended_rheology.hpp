@@ -32,17 +32,17 @@
 
 namespace bagnold::models::blended {
 
-// The stress-ratio constants App. A (Eqs. 11–12, Table II) and App. D (Eqs. 14–15, Table I)
-// print with the same values: the defaults of both models' deck keys i0, alpha_1, beta_1,
-// gamma_hat_0, alpha_2, beta_2.
-namespace stress_ratio_default {
-inline constexpr double transition_inertial_number = 0.32;  // I_0 [-]
-inline constexpr double hard_rise = 0.37;                   // α₁ [-]
-inline constexpr double hard_exponent = 1.5;                // β₁ [-]
-inline constexpr double transition_shear_rate = 0.1;        // γ̂_0 [-]
-inline constexpr double soft_drop = 0.2;                    // α₂ [-]
-inline constexpr double soft_exponent = 1.0;                // β₂ [-]
-}  // namespace stress_ratio_default
+// The stress-ratio constants of η_hard and η_soft, which App. A (Eqs. 11–12, Table II) and
+// App. D (Eqs. 14–15, Table I) print with the same values: declared once, here, for both models
+// (deck keys i0, alpha_1, beta_1, gamma_hat_0, alpha_2, beta_2).
+struct StressRatio {
+  double transition_inertial_number = 0.32;  // I_0 [-]
+  double hard_rise = 0.37;                   // α₁ [-]
+  double hard_exponent = 1.5;                // β₁ [-]
+  double transition_shear_rate = 0.1;        // γ̂_0 [-]
+  double soft_drop = 0.2;                    // α₂ [-]
+  double soft_exponent = 1.0;                // β₂ [-]
+};
 
 struct Constants {
   // μ-dependent (from the model's table at the material's μ)
@@ -56,12 +56,7 @@ struct Constants {
   double cohesive_stress_ratio = 0.0;  // α₃ [-]
   // μ-independent
   double inertial;                        // α_inert [-]
-  double transition_inertial_number;      // I_0 [-]
-  double hard_rise;                       // α₁ [-]
-  double hard_exponent;                   // β₁ [-]
-  double transition_shear_rate;           // γ̂_0 [-]
-  double soft_drop;                       // α₂ [-]
-  double soft_exponent;                   // β₂ [-]
+  StressRatio stress_ratio;               // I_0, α₁, β₁, γ̂_0, α₂, β₂
   // Cohesion (App. D): zero, i.e. none, unless the model sets them (steady_shear_cohesive.hpp
   // holds their defaults); each multiplies Bo* or is used only where Bo* > 0.
   double cohesive_onset_fraction = 0.0;  // φ_a [-]
@@ -96,15 +91,7 @@ PointStress point_stress(double phi, double shear_rate, const Material& material
 std::vector<CoefficientSpec> stress_ratio_specs(const std::string& hard, const std::string& soft,
                                                 const std::string& table);
 
-// Reads those constants into a model's Constants (the fields share their names).
-template <class ModelConstants>
-void read_stress_ratio_constants(const Coefficients& c, ModelConstants& out) {
-  out.transition_inertial_number = real_coefficient(c, "i0");
-  out.hard_rise = real_coefficient(c, "alpha_1");
-  out.hard_exponent = real_coefficient(c, "beta_1");
-  out.transition_shear_rate = real_coefficient(c, "gamma_hat_0");
-  out.soft_drop = real_coefficient(c, "alpha_2");
-  out.soft_exponent = real_coefficient(c, "beta_2");
-}
+// Reads those constants from a model's resolved coefficients.
+StressRatio read_stress_ratio(const Coefficients& c);
 
 }  // namespace bagnold::models::blended

@@ -16,12 +16,7 @@ blended::Constants constants_at(double friction, const Constants& k) {
   c.intermediate = k.intermediate;
   c.yield_stress_ratio = chialvo2012::yield_stress_ratio(friction);  // A Table II
   c.inertial = k.inertial;
-  c.transition_inertial_number = k.transition_inertial_number;
-  c.hard_rise = k.hard_rise;
-  c.hard_exponent = k.hard_exponent;
-  c.transition_shear_rate = k.transition_shear_rate;
-  c.soft_drop = k.soft_drop;
-  c.soft_exponent = k.soft_exponent;
+  c.stress_ratio = k.stress_ratio;
   c.onset_smoothing = k.onset_smoothing;
   return c;  // no cohesion: α_coh = α₃ = 0
 }
@@ -49,11 +44,10 @@ double SteadyShear::packing_limit(const Material& material) const { return chial
 
 namespace {
 Constants read_constants(const Coefficients& c) {
-  Constants constants{.inertial = real_coefficient(c, "alpha_inert"),
+  return {.inertial = real_coefficient(c, "alpha_inert"),
           .intermediate = real_coefficient(c, "alpha_int"),
+          .stress_ratio = blended::read_stress_ratio(c),
           .onset_smoothing = read_onset_smoothing(c)};
-  blended::read_stress_ratio_constants(c, constants);
-  return constants;
 }
 
 [[maybe_unused]] const bool registered = stress_registry().add(

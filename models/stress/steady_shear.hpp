@@ -16,13 +16,7 @@ namespace bagnold::models::steady_shear {
 struct Constants {
   double inertial = 0.021;                   // α_inert
   double intermediate = 0.099;               // α_int
-  // I_0, α₁, β₁, γ̂_0, α₂, β₂: the stress-ratio constants both models share.
-  double transition_inertial_number = blended::stress_ratio_default::transition_inertial_number;
-  double hard_rise = blended::stress_ratio_default::hard_rise;                          // α₁
-  double hard_exponent = blended::stress_ratio_default::hard_exponent;                  // β₁
-  double transition_shear_rate = blended::stress_ratio_default::transition_shear_rate;  // γ̂_0
-  double soft_drop = blended::stress_ratio_default::soft_drop;                          // α₂
-  double soft_exponent = blended::stress_ratio_default::soft_exponent;                  // β₂
+  blended::StressRatio stress_ratio;  // I_0, α₁, β₁, γ̂_0, α₂, β₂: both models' defaults
   double onset_smoothing = default_onset_smoothing;  // x_s
 };
 

@@ -54,12 +54,7 @@ blended::Constants constants_at(double friction, const Constants& k) {
   c.cohesive_1 = table_cohesive_1()(friction);
   c.cohesive_stress_ratio = table_cohesive_stress_ratio()(friction);
   c.inertial = k.inertial;
-  c.transition_inertial_number = k.transition_inertial_number;
-  c.hard_rise = k.hard_rise;
-  c.hard_exponent = k.hard_exponent;
-  c.transition_shear_rate = k.transition_shear_rate;
-  c.soft_drop = k.soft_drop;
-  c.soft_exponent = k.soft_exponent;
+  c.stress_ratio = k.stress_ratio;
   c.cohesive_onset_fraction = k.cohesive_onset_fraction;
   c.cohesive_2 = k.cohesive_2;
   c.cohesive_rate = k.cohesive_rate;
@@ -83,13 +78,12 @@ double SteadyShearCohesive::packing_limit(const Material& material) const { retu
 
 namespace {
 Constants read_constants(const Coefficients& c) {
-  Constants constants{.cohesive_onset_fraction = real_coefficient(c, "phi_a"),
+  return {.cohesive_onset_fraction = real_coefficient(c, "phi_a"),
           .inertial = real_coefficient(c, "alpha_inert"),
           .cohesive_2 = real_coefficient(c, "alpha_coh_2"),
+          .stress_ratio = blended::read_stress_ratio(c),
           .cohesive_rate = real_coefficient(c, "alpha_4"),
           .onset_smoothing = read_onset_smoothing(c)};
-  blended::read_stress_ratio_constants(c, constants);
-  return constants;
 }
 
 [[maybe_unused]] const bool registered = stress_registry().add(

@@ -19,13 +19,7 @@ struct Constants {
   double cohesive_onset_fraction = 0.45;     // φ_a
   double inertial = 0.015;                   // α_inert
   double cohesive_2 = 0.008;                 // α_coh,2
-  // I_0, α₁, β₁, γ̂_0, α₂, β₂: the stress-ratio constants both models share.
-  double transition_inertial_number = blended::stress_ratio_default::transition_inertial_number;
-  double hard_rise = blended::stress_ratio_default::hard_rise;                          // α₁
-  double hard_exponent = blended::stress_ratio_default::hard_exponent;                  // β₁
-  double transition_shear_rate = blended::stress_ratio_default::transition_shear_rate;  // γ̂_0
-  double soft_drop = blended::stress_ratio_default::soft_drop;                          // α₂
-  double soft_exponent = blended::stress_ratio_default::soft_exponent;                  // β₂
+  blended::StressRatio stress_ratio;  // I_0, α₁, β₁, γ̂_0, α₂, β₂: both models' defaults
   double cohesive_rate = 0.1;                // α₄
   double onset_smoothing = default_onset_smoothing;  // x_s
 };

@@ -113,12 +113,11 @@ TEST(SteadyShearCohesive, ItsNonRefitConstantsHaveTheSteadyShearDefaults) {
   EXPECT_EQ(d.onset_smoothing, a.onset_smoothing);
   EXPECT_EQ(d.onset_smoothing, models::default_onset_smoothing);
   EXPECT_EQ(d.onset_smoothing, 1e-2);  // the value the decks and docs/models.md give
-  EXPECT_EQ(d.transition_inertial_number, a.transition_inertial_number);
-  EXPECT_EQ(d.hard_rise, a.hard_rise);
-  EXPECT_EQ(d.hard_exponent, a.hard_exponent);
-  EXPECT_EQ(d.transition_shear_rate, a.transition_shear_rate);
-  EXPECT_EQ(d.soft_drop, a.soft_drop);
-  EXPECT_EQ(d.soft_exponent, a.soft_exponent);
+  // The stress-ratio constants are one struct with one set of defaults (App. A Table II).
+  EXPECT_EQ(d.stress_ratio.transition_inertial_number, 0.32);
+  EXPECT_EQ(d.stress_ratio.transition_inertial_number, a.stress_ratio.transition_inertial_number);
+  EXPECT_EQ(d.stress_ratio.hard_rise, a.stress_ratio.hard_rise);
+  EXPECT_EQ(d.stress_ratio.soft_drop, a.stress_ratio.soft_drop);
 }
 
 TEST(SteadyShearCohesive, AtZeroBondNumberWithAppendixATablesIsSteadyShearExactly) {

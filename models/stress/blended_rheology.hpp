@@ -55,14 +55,14 @@ struct Constants {
   double cohesive_1 = 0.0;             // α_coh,1 [-]
   double cohesive_stress_ratio = 0.0;  // α₃ [-]
   // μ-independent
-  double inertial;                        // α_inert [-]
-  StressRatio stress_ratio;               // I_0, α₁, β₁, γ̂_0, α₂, β₂
+  double inertial;           // α_inert [-]
+  StressRatio stress_ratio;  // I_0, α₁, β₁, γ̂_0, α₂, β₂
   // Cohesion (App. D): zero, i.e. none, unless the model sets them (steady_shear_cohesive.hpp
   // holds their defaults); each multiplies Bo* or is used only where Bo* > 0.
   double cohesive_onset_fraction = 0.0;  // φ_a [-]
   double cohesive_2 = 0.0;               // α_coh,2 [-]
   double cohesive_rate = 0.0;            // α₄ [-]
-  double onset_smoothing;                // x_s [-] at onset of |φ − φ_c|^ε (onset_smoothing.hpp)
+  double onset_smoothing;  // x_s [-] at onset of |φ − φ_c|^ε (onset_smoothing.hpp)
 };
 
 // γ̂ = γ̇ d / sqrt(k/(ρ_s d)), App. A Sec. III.

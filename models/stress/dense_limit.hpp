@@ -9,8 +9,9 @@
 //     App. A Eq. 8 takes over the job of resisting compaction:
 //        P_qs = s · α_QS(μ) · (k/d) · g(φ − φ_j),   g(x) = x² (x² + x_s²)^{1/3 − 1} for x > 0
 //     g(x) → x^{2/3} for x ≫ x_s (Eq. 8's exponent) and g has a finite slope at onset, so
-//     dP_s/dε_s stays finite (onset_smoothing.hpp, x_s shared with the rheology models). It carries the yield shear stress τ_qs = η_s(μ) P_qs
-//     (Mohr–Coulomb with App. A's yield stress ratio), whose viscosity is regularized.
+//     dP_s/dε_s stays finite (onset_smoothing.hpp, x_s shared with the rheology models). It carries
+//     the yield shear stress τ_qs = η_s(μ) P_qs (Mohr–Coulomb with App. A's yield stress ratio),
+//     whose viscosity is regularized.
 // The other end, φ → 0, is dilute_limit.hpp's.
 
 #include <vector>
@@ -23,8 +24,8 @@
 namespace bagnold::models {
 
 struct DenseLimit {
-  double jamming_margin = 0.01;     // δ [-]
-  double quasi_static_scale = 1.0;  // s [-]
+  double jamming_margin = 0.01;                      // δ [-]
+  double quasi_static_scale = 1.0;                   // s [-]
   double onset_smoothing = default_onset_smoothing;  // x_s [-]
 
   static std::vector<CoefficientSpec> specs();

@@ -7,9 +7,9 @@
 //      Γ = 12(1 − e²) ρ_s φ² g0 T^{3/2}/(√π d),  g0 Carnahan–Starling (App. B Eq. 11);
 //    T from MFIX's algebraic balance −P tr D + 2μ S:S + λ (tr D)² = Γ, a quadratic in √T;
 //  - plastic regime (ε_g < ε_g*): the plastic pressure P* = A (ε_g* − ε_g)^n
-//    (A = 10²⁴ Pa, n = 10: MFIX's 10²⁵ dyn/cm²; plastic_pressure.hpp) with Schaeffer's (1987) frictional viscosity
-//    μ = P* sin φ_f /(2 √I₂D) = P* sin φ_f / γ̇_s, capped (MFIX: 1000 poise = 100 Pa s);
-//    the kinetic stresses and T are zero there, as in MFIX.
+//    (A = 10²⁴ Pa, n = 10: MFIX's 10²⁵ dyn/cm²; plastic_pressure.hpp) with Schaeffer's (1987)
+//    frictional viscosity μ = P* sin φ_f /(2 √I₂D) = P* sin φ_f / γ̇_s, capped (MFIX: 1000 poise =
+//    100 Pa s); the kinetic stresses and T are zero there, as in MFIX.
 // The switch at ε_g* is discontinuous in P_s, exactly as in MFIX (docs/models.md).
 
 #include <string>

@@ -29,7 +29,7 @@ struct Constants {
   double dense_slope = 0.36;                // α [-], dense prefactor of I′ in η (Eq. 42)
   double dense_temperature = 0.06;          // α₁ [-], Eq. 27
   double radial_distribution_scale = rdf::chialvo_sundaresan_scale;  // α₂ [-], Eq. 31
-  double psi_exponent = -2.0 / 3.0;         // exponent of (1 − e²) in ψ, Eq. 32
+  double psi_exponent = -2.0 / 3.0;  // exponent of (1 − e²) in ψ, Eq. 32
 };
 
 // App. B Eqs. 22–23: e_eff = e − (3/2) μ exp(−3μ).

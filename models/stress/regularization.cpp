@@ -4,7 +4,9 @@
 
 namespace bagnold::models {
 
-std::vector<CoefficientSpec> ViscosityLimits::specs() { return specs(ViscosityLimits{}.max_viscosity); }
+std::vector<CoefficientSpec> ViscosityLimits::specs() {
+  return specs(ViscosityLimits{}.max_viscosity);
+}
 
 std::vector<CoefficientSpec> ViscosityLimits::specs(double default_max_viscosity) {
   return {

@@ -38,8 +38,8 @@ class Skt final : public SolidsStressModel {
  public:
   // frictional_yield: add the quasi-static yield stress η_s(μ) P_qs of the dense limit (off in
   // the report's SKT, which "does not consider ... the role of frictional contact").
-  Skt(const rdf::RadialDistribution& radial, bool frictional_yield, const DenseLimit& dense, const DiluteLimit& dilute,
-      const ViscosityLimits& limits);
+  Skt(const rdf::RadialDistribution& radial, bool frictional_yield, const DenseLimit& dense,
+      const DiluteLimit& dilute, const ViscosityLimits& limits);
   std::string name() const override { return "skt"; }
   void evaluate(const Material& material, const SolidsState& in, SolidsStress& out) const override;
   bool defines_temperature() const override { return true; }

@@ -14,8 +14,8 @@ namespace bagnold::models::steady_shear {
 
 // App. A's μ-independent constants (Table II), deck-overridable.
 struct Constants {
-  double inertial = 0.021;                   // α_inert
-  double intermediate = 0.099;               // α_int
+  double inertial = 0.021;            // α_inert
+  double intermediate = 0.099;        // α_int
   blended::StressRatio stress_ratio;  // I_0, α₁, β₁, γ̂_0, α₂, β₂: both models' defaults
   double onset_smoothing = default_onset_smoothing;  // x_s
 };

@@ -16,11 +16,11 @@ namespace bagnold::models::steady_shear_cohesive {
 
 // App. D's μ-independent constants (Table I), deck-overridable.
 struct Constants {
-  double cohesive_onset_fraction = 0.45;     // φ_a
-  double inertial = 0.015;                   // α_inert
-  double cohesive_2 = 0.008;                 // α_coh,2
+  double cohesive_onset_fraction = 0.45;  // φ_a
+  double inertial = 0.015;                // α_inert
+  double cohesive_2 = 0.008;              // α_coh,2
   blended::StressRatio stress_ratio;  // I_0, α₁, β₁, γ̂_0, α₂, β₂: both models' defaults
-  double cohesive_rate = 0.1;                // α₄
+  double cohesive_rate = 0.1;         // α₄
   double onset_smoothing = default_onset_smoothing;  // x_s
 };
 

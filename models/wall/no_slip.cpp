@@ -17,13 +17,13 @@ class NoSlip final : public WallLaw {
   bool slips() const override { return false; }
 };
 
-[[maybe_unused]] const bool registered = wall_law_registry().add(
-    {.name = "no-slip",
-     .summary = "no slip: the solids stick to the wall, c_w = μ_s/δ",
-     .coefficients = {},
-     .make = [](const WallLawInput&) -> std::unique_ptr<WallLaw> {
-       return std::make_unique<NoSlip>();
-     }});
+[[maybe_unused]] const bool registered =
+    wall_law_registry().add({.name = "no-slip",
+                             .summary = "no slip: the solids stick to the wall, c_w = μ_s/δ",
+                             .coefficients = {},
+                             .make = [](const WallLawInput&) -> std::unique_ptr<WallLaw> {
+                               return std::make_unique<NoSlip>();
+                             }});
 }  // namespace
 
 }  // namespace bagnold::models::wall

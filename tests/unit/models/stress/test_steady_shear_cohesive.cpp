@@ -90,7 +90,7 @@ TEST(SteadyShearCohesive, TableIIsInterpolatedInFrictionAndClampedToItsRange) {
 namespace {
 // The rheometer states of the Bo* = 0 comparisons: φ from dilute to past φ_c (App. A's φ_c(μ) is
 // 0.613, 0.596, 0.587 at μ = 0.1, 0.3, 0.5; App. D's 0.614, 0.596, 0.587), γ̇ over eight decades.
-const double fractions[] = {0.01, 0.05,    0.1,   0.2,    0.3,   0.4,   0.5,    0.55,  0.58,
+const double fractions[] = {0.01,  0.05,   0.1,   0.2,    0.3,   0.4,   0.5,    0.55,  0.58,
                             0.586, 0.5869, 0.587, 0.5871, 0.59,  0.595, 0.5959, 0.596, 0.5961,
                             0.597, 0.6,    0.612, 0.613,  0.614, 0.62,  0.65,   0.7};
 const double shear_rates[] = {1e-4, 1e-2, 1.0, 1e2, 1e4};

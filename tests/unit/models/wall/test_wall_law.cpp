@@ -50,9 +50,8 @@ const std::vector<double> wall_distances{1.25e-3, 5e-3};
 
 wall::WallLawInput input_for(const models::SolidsStressModel& model,
                              const wall::WallParameters& parameters) {
-  return {.material = beads(),
-          .wall = parameters,
-          .closure = wall::closure_at_wall(model, beads())};
+  return {
+      .material = beads(), .wall = parameters, .closure = wall::closure_at_wall(model, beads())};
 }
 }  // namespace
 
@@ -60,8 +59,8 @@ TEST(WallLawRegistry, ListsExactlyTheShippedLaws) {
   const std::vector<std::string> shipped{"dense-slip", "free-slip", "johnson-jackson", "no-slip"};
   EXPECT_EQ(wall::wall_law_registry().names(), shipped);
   const auto closure = models::stress_registry().create("mkt");
-  const auto in = input_for(*closure, {.specularity = 0.5, .wall_restitution = 0.9,
-                                       .wall_friction = 0.5});
+  const auto in =
+      input_for(*closure, {.specularity = 0.5, .wall_restitution = 0.9, .wall_friction = 0.5});
   for (const auto& name : shipped) {
     const auto law = wall::wall_law_registry().create(name, in);
     EXPECT_EQ(law->name(), name);
@@ -112,8 +111,8 @@ TEST(WallLaw, JohnsonJacksonIsTheSolversFormula) {
   // A closure with Θ (mkt, φ_max = φ_c) and one without (plastic, φ_max = 1 − ε_g*).
   for (const std::string closure_name : {"mkt", "plastic", "steady-shear"}) {
     const auto closure = models::stress_registry().create(closure_name);
-    const auto law = wall::wall_law_registry().create("johnson-jackson",
-                                                      input_for(*closure, parameters));
+    const auto law =
+        wall::wall_law_registry().create("johnson-jackson", input_for(*closure, parameters));
     const bool has_temperature = closure->defines_temperature();
     const double limit = closure->packing_limit(beads());
     const wall::JohnsonJacksonWall jj{0.5, 0.9, limit};
@@ -127,8 +126,8 @@ TEST(WallLaw, JohnsonJacksonIsTheSolversFormula) {
         const double theta = has_temperature && std::isfinite(near.temperature)
                                  ? std::max(near.temperature, 0.0)
                                  : wall::johnson_jackson_wall_temperature(jj, near.slip_speed);
-        const double c_slip = wall::johnson_jackson_slip_coefficient(
-            jj, beads(), std::min(phi, limit), g0, theta);
+        const double c_slip =
+            wall::johnson_jackson_slip_coefficient(jj, beads(), std::min(phi, limit), g0, theta);
         EXPECT_EQ(law->coefficient(near, delta), wall::wall_coefficient(c_slip, mu, delta))
             << closure_name << " φ = " << near.fraction << " Θ = " << near.temperature;
       }
@@ -138,8 +137,7 @@ TEST(WallLaw, JohnsonJacksonIsTheSolversFormula) {
   // c_JJ = (π√3/6)·0.5·2500·(0.3/0.587)·g0_CS(0.3)·0.2, g0_CS(0.3) = 0.85/0.343;
   // c_w = 1/(δ/μ_s + 1/c_JJ).
   const auto mkt = models::stress_registry().create("mkt");
-  const auto law =
-      wall::wall_law_registry().create("johnson-jackson", input_for(*mkt, parameters));
+  const auto law = wall::wall_law_registry().create("johnson-jackson", input_for(*mkt, parameters));
   const double c_jj = 0.9068996821 * 0.5 * 2500.0 * (0.3 / 0.587) * (0.85 / 0.343) * 0.2;
   EXPECT_NEAR(law->coefficient({.fraction = 0.3, .viscosity = 1.0, .temperature = 0.04}, 5e-3),
               1.0 / (5e-3 + 1.0 / c_jj), 1e-8 * c_jj);
@@ -147,8 +145,8 @@ TEST(WallLaw, JohnsonJacksonIsTheSolversFormula) {
 
 TEST(WallLaw, DenseSlipIsTheSolversFormula) {
   const auto closure = models::stress_registry().create("steady-shear");
-  const auto law = wall::wall_law_registry().create(
-      "dense-slip", input_for(*closure, {.wall_friction = 0.5}));
+  const auto law =
+      wall::wall_law_registry().create("dense-slip", input_for(*closure, {.wall_friction = 0.5}));
   const wall::DenseSlip reference(beads(), {.wall_friction = 0.5},
                                   models::chialvo2012::yield_stress_ratio(0.5));
   int slipping = 0;

@@ -6,6 +6,7 @@
 #include <algorithm>
 
 #include "models/stress/solids_stress.hpp"
+#include "models/wall/wall_law.hpp"
 #include "src/deck/load.hpp"
 #include "src/deck/sections.hpp"
 #include "tests/unit/core/deck/deck_test_support.hpp"
@@ -78,6 +79,21 @@ TEST(DeckLoad, EveryDocumentedDefaultIsTheStructInitializer) {
   // Spot checks against the values themselves, so the test fails if both sides move together.
   EXPECT_EQ(deck::Numerics{}.max_outer_iterations, 40);
   EXPECT_EQ(deck::Models{}.drag.name, "gidaspow");
+}
+
+TEST(DeckLoad, SolidsWallChoicesAreTheWallLawRegistry) {
+  // One list: adding a law to models/wall/ adds it to the deck.
+  std::string expected = "one of: ";
+  const auto names = models::wall::wall_law_registry().names();
+  for (std::size_t i = 0; i < names.size(); ++i) expected += (i ? ", " : "") + names[i];
+  int found = 0;
+  for (const auto& k : deck::boundary_section().keys) {
+    if (k.info.name != "solids_wall") continue;
+    EXPECT_EQ(k.info.range, expected);
+    ++found;
+  }
+  EXPECT_EQ(found, 1);
+  EXPECT_EQ(names.size(), 4u);
 }
 
 TEST(DeckLoad, LeftOutTablesAreDefaultConstructed) {

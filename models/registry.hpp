@@ -2,12 +2,16 @@
 // Run-time selection of a model family member by name (as OpenFOAM's run-time selection tables
 // and AMR-Wind's Factory, without macros). Each member registers itself at the end of its own
 // .cpp; `models` is a CMake OBJECT library so no registrar is dropped by the linker.
+//
+// Input is what make() builds a member from: the member's resolved coefficients for the
+// closures (stress, drag), or a family's own struct (the wall laws' WallLawInput).
 
 #include <algorithm>
 #include <functional>
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "models/coefficients.hpp"
@@ -19,14 +23,14 @@ class UnknownModel : public std::invalid_argument {
   using std::invalid_argument::invalid_argument;
 };
 
-template <class Base>
+template <class Base, class Input = Coefficients>
 class Registry {
  public:
   struct Entry {
     std::string name;
     std::string summary;
     std::vector<CoefficientSpec> coefficients;
-    std::function<std::unique_ptr<Base>(const Coefficients&)> make;
+    std::function<std::unique_ptr<Base>(const Input&)> make;
   };
 
   bool add(Entry entry) {
@@ -44,10 +48,14 @@ class Registry {
     throw UnknownModel("unknown model '" + name + "' (known: " + known + ")");
   }
 
-  // Builds the named model from the given coefficients (defaults fill what is not given).
-  std::unique_ptr<Base> create(const std::string& name, const Coefficients& given = {}) const {
+  // Builds the named member from `given`; coefficients are first resolved against the
+  // member's declarations (defaults fill what is not given).
+  std::unique_ptr<Base> create(const std::string& name, const Input& given = {}) const {
     const Entry& e = find(name);
-    return e.make(resolve(e.coefficients, given));
+    if constexpr (std::is_same_v<Input, Coefficients>)
+      return e.make(resolve(e.coefficients, given));
+    else
+      return e.make(given);
   }
 
   std::vector<std::string> names() const {

@@ -5,7 +5,10 @@
 // models do so with their jamming margin (docs/models.md, "At and above φ_c").
 
 #include <string>
+#include <type_traits>
 #include <vector>
+
+#include "models/dual.hpp"
 
 namespace bagnold::models::rdf {
 
@@ -22,27 +25,35 @@ Real carnahan_starling(Real phi);
 template <class Real>
 Real torquato(Real phi, double critical_fraction);
 
+// α₂ of App. B Eq. 31 (Table II); MKT's deck default (mkt.hpp) is this one.
+inline constexpr double chialvo_sundaresan_scale = 0.58;
+
 // App. B Eq. 31 (MKT): g0 = g0_CS + α₂ φ²/(φ_c(μ) − φ)^{3/2}, α₂ = 0.58 (App. B Table II).
 template <class Real>
-Real chialvo_sundaresan(Real phi, double critical_fraction, double alpha_2 = 0.58);
+Real chialvo_sundaresan(Real phi, double critical_fraction,
+                        double alpha_2 = chialvo_sundaresan_scale);
 
-enum class Kind { carnahan_starling, torquato, chialvo_sundaresan };
+// A member the deck can name (SKT's radial_distribution): g0(φ; φ_c) in double and in Dual.
+struct RadialDistribution {
+  std::string name;     // deck spelling
+  std::string summary;  // its equation, for the key reference
+  double (*value)(double phi, double critical_fraction);
+  Dual (*dual)(Dual phi, double critical_fraction);
+};
 
-// Deck spellings: "carnahan-starling", "torquato", "mkt" (the MKT g0 of Eq. 31).
-Kind kind_from_name(const std::string& name);
-const std::vector<std::string>& kind_names();
+// Every member, in the order the deck lists them: carnahan-starling, torquato, mkt (the MKT
+// g0 of Eq. 31 with α₂ = 0.58). One table, in radial_distribution.cpp.
+const std::vector<RadialDistribution>& radial_distributions();
+// The member called `name`; throws UnknownModel (an std::invalid_argument) listing the others.
+const RadialDistribution& radial_distribution(const std::string& name);
+std::vector<std::string> radial_distribution_names();
 
 template <class Real>
-Real evaluate(Kind kind, Real phi, double critical_fraction) {
-  switch (kind) {
-    case Kind::torquato:
-      return torquato(phi, critical_fraction);
-    case Kind::chialvo_sundaresan:
-      return chialvo_sundaresan(phi, critical_fraction);
-    case Kind::carnahan_starling:
-      break;
-  }
-  return carnahan_starling(phi);
+Real evaluate(const RadialDistribution& g0, Real phi, double critical_fraction) {
+  if constexpr (std::is_same_v<Real, Dual>)
+    return g0.dual(phi, critical_fraction);
+  else
+    return g0.value(phi, critical_fraction);
 }
 
 }  // namespace bagnold::models::rdf

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "models/stress/dense_limit.hpp"
+#include "models/stress/onset_smoothing.hpp"
 
 namespace bagnold::models::blended {
 
@@ -42,14 +42,16 @@ template double scaled_pressure(double, double, double, const Constants&);
 template Dual scaled_pressure(Dual, double, double, const Constants&);
 
 double hard_stress_ratio(double inertial_number, const Constants& c) {
-  const double rising = std::pow(inertial_number, c.hard_exponent);
+  const StressRatio& r = c.stress_ratio;
+  const double rising = std::pow(inertial_number, r.hard_exponent);
   return c.yield_stress_ratio +
-         c.hard_rise * rising / (std::pow(c.transition_inertial_number, c.hard_exponent) + rising);
+         r.hard_rise * rising / (std::pow(r.transition_inertial_number, r.hard_exponent) + rising);
 }
 
 double soft_stress_ratio(double scaled_rate, const Constants& c) {
-  const double rising = std::pow(scaled_rate, c.soft_exponent);
-  return c.soft_drop * rising / (std::pow(c.transition_shear_rate, c.soft_exponent) + rising);
+  const StressRatio& r = c.stress_ratio;
+  const double rising = std::pow(scaled_rate, r.soft_exponent);
+  return r.soft_drop * rising / (std::pow(r.transition_shear_rate, r.soft_exponent) + rising);
 }
 
 double scaled_shear_stress(double phi, double scaled_rate, double scaled_pressure,
@@ -89,15 +91,29 @@ std::vector<CoefficientSpec> stress_ratio_specs(const std::string& hard, const s
                                                 const std::string& table) {
   const std::string of_hard = ", " + hard + ", " + table + ".";
   const std::string of_soft = ", " + soft + ", " + table + ".";
+  const StressRatio d;
   return {
-      real_spec("i0", "-", 0.32, 1e-6, 10.0, "I_0 [-]: transition inertial number of η_hard" + of_hard),
-      real_spec("alpha_1", "-", 0.37, 0.0, 10.0, "α₁ [-]: rise of η_hard above η_s" + of_hard),
-      real_spec("beta_1", "-", 1.5, 0.1, 10.0, "β₁ [-]: exponent of η_hard" + of_hard),
-      real_spec("gamma_hat_0", "-", 0.1, 1e-9, 10.0,
+      real_spec("i0", "-", d.transition_inertial_number, 1e-6, 10.0,
+                "I_0 [-]: transition inertial number of η_hard" + of_hard),
+      real_spec("alpha_1", "-", d.hard_rise, 0.0, 10.0,
+                "α₁ [-]: rise of η_hard above η_s" + of_hard),
+      real_spec("beta_1", "-", d.hard_exponent, 0.1, 10.0,
+                "β₁ [-]: exponent of η_hard" + of_hard),
+      real_spec("gamma_hat_0", "-", d.transition_shear_rate, 1e-9, 10.0,
                 "γ̂_0 [-]: transition scaled shear rate of η_soft" + of_soft),
-      real_spec("alpha_2", "-", 0.2, 0.0, 10.0, "α₂ [-]: softness drop of η" + of_soft),
-      real_spec("beta_2", "-", 1.0, 0.1, 10.0, "β₂ [-]: exponent of η_soft" + of_soft),
+      real_spec("alpha_2", "-", d.soft_drop, 0.0, 10.0, "α₂ [-]: softness drop of η" + of_soft),
+      real_spec("beta_2", "-", d.soft_exponent, 0.1, 10.0,
+                "β₂ [-]: exponent of η_soft" + of_soft),
   };
+}
+
+StressRatio read_stress_ratio(const Coefficients& c) {
+  return {.transition_inertial_number = real_coefficient(c, "i0"),
+          .hard_rise = real_coefficient(c, "alpha_1"),
+          .hard_exponent = real_coefficient(c, "beta_1"),
+          .transition_shear_rate = real_coefficient(c, "gamma_hat_0"),
+          .soft_drop = real_coefficient(c, "alpha_2"),
+          .soft_exponent = real_coefficient(c, "beta_2")};
 }
 
 }  // namespace bagnold::models::blended

@@ -7,14 +7,6 @@
 
 namespace bagnold::models {
 
-template <class Real>
-Real smoothed_power(Real excess, double exponent, double smoothing) {
-  using std::pow;
-  if (!(value_of(excess) > 0.0)) return Real(0.0);
-  if (smoothing == 0.0) return pow(excess, exponent);
-  return excess * excess * pow(excess * excess + smoothing * smoothing, 0.5 * exponent - 1.0);
-}
-
 std::vector<CoefficientSpec> DenseLimit::specs() {
   const DenseLimit defaults;
   return {
@@ -24,18 +16,14 @@ std::vector<CoefficientSpec> DenseLimit::specs() {
       real_spec("quasi_static_scale", "-", defaults.quasi_static_scale, 0.0, 1e3,
                 "s [-]: multiplies α_QS(μ) (App. A Table II) in the quasi-static pressure "
                 "s α_QS (k/d) (φ − φ_c + δ)^{2/3} (App. A Eq. 8 form); 0 switches it off."),
-      real_spec("onset_smoothing", "-", defaults.onset_smoothing, 0.0, 0.1,
-                "x_s [-]: volume-fraction width over which the 2/3 power of the quasi-static "
-                "pressure is smoothed (quadratic below x_s) so that dP_s/dε_s is finite at "
-                "onset; 1e-4 makes a packed bed ~100x stiffer and the time step ~5x shorter "
-                "(docs/models.md)."),
+      onset_smoothing_spec(),
   };
 }
 
 DenseLimit DenseLimit::read(const Coefficients& c) {
   return {.jamming_margin = real_coefficient(c, "jamming_margin"),
           .quasi_static_scale = real_coefficient(c, "quasi_static_scale"),
-          .onset_smoothing = real_coefficient(c, "onset_smoothing")};
+          .onset_smoothing = read_onset_smoothing(c)};
 }
 
 template <class Real>
@@ -68,8 +56,6 @@ KineticDensePressure kinetic_dense_pressure(double phi, double shear_rate, const
           temperature_factor.value * rate_d2, quasi_static.value};
 }
 
-template double smoothed_power(double, double, double);
-template Dual smoothed_power(Dual, double, double);
 template double DenseLimit::capped(double, double) const;
 template Dual DenseLimit::capped(Dual, double) const;
 template double DenseLimit::quasi_static_pressure(double, double, double, double) const;

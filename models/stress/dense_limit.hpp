@@ -9,8 +9,9 @@
 //     App. A Eq. 8 takes over the job of resisting compaction:
 //        P_qs = s · α_QS(μ) · (k/d) · g(φ − φ_j),   g(x) = x² (x² + x_s²)^{1/3 − 1} for x > 0
 //     g(x) → x^{2/3} for x ≫ x_s (Eq. 8's exponent) and g has a finite slope at onset, so
-//     dP_s/dε_s stays finite. It carries the yield shear stress τ_qs = η_s(μ) P_qs
-//     (Mohr–Coulomb with App. A's yield stress ratio), whose viscosity is regularized.
+//     dP_s/dε_s stays finite (onset_smoothing.hpp, x_s shared with the rheology models). It carries
+//     the yield shear stress τ_qs = η_s(μ) P_qs (Mohr–Coulomb with App. A's yield stress ratio),
+//     whose viscosity is regularized.
 // The other end, φ → 0, is dilute_limit.hpp's.
 
 #include <vector>
@@ -18,18 +19,14 @@
 #include "models/coefficients.hpp"
 #include "models/dual.hpp"
 #include "models/material.hpp"
+#include "models/stress/onset_smoothing.hpp"
 
 namespace bagnold::models {
 
-// x² (x² + x_s²)^{n/2 − 1} for x > 0, else 0: x^n away from onset with a finite slope at x = 0.
-// x_s = 0 gives x^n exactly. Templated for Dual.
-template <class Real>
-Real smoothed_power(Real excess, double exponent, double smoothing);
-
 struct DenseLimit {
-  double jamming_margin = 0.01;     // δ [-]
-  double quasi_static_scale = 1.0;  // s [-]
-  double onset_smoothing = 1e-2;    // x_s [-]
+  double jamming_margin = 0.01;                      // δ [-]
+  double quasi_static_scale = 1.0;                   // s [-]
+  double onset_smoothing = default_onset_smoothing;  // x_s [-]
 
   static std::vector<CoefficientSpec> specs();
   static DenseLimit read(const Coefficients& c);

@@ -23,7 +23,7 @@ std::vector<CoefficientSpec> DiluteLimit::specs(Anchor anchor) {
             "temperature of φ_d (P_s non-decreasing in φ); kinetic = the formulas as printed, "
             "whose P_s ~ 1/φ makes dilute regions unstable.";
   return {
-      real_spec("dilute_cutoff", "-", 1e-6, 1e-12, 0.01,
+      real_spec("dilute_cutoff", "-", DiluteLimit{}.cutoff, 1e-12, 0.01,
                 "φ_min [-]: below this solids fraction the stresses and T are zero."),
       choice_spec("dilute_stress", "ideal-gas", {"ideal-gas", printed_choice(anchor)}, treatment),
   };

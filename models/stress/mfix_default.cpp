@@ -63,18 +63,17 @@ MfixDefault::MfixDefault(const Constants& constants, const DiluteLimit& dilute,
 void MfixDefault::evaluate(const Material& material, const SolidsState& in,
                            SolidsStress& out) const {
   require_valid_material(material, name());
-  const double packed_fraction = 1.0 - m_constants.packed_gas_fraction;
+  const double packed_fraction = m_constants.plastic.packed_fraction();
   const double sin_friction_angle = std::sin(m_constants.internal_friction_angle * pi / 180.0);
   evaluate_cells_dilute_limited(m_dilute, material, in, out,
                                 [&](double phi, double shear_rate, double divergence) {
     PointStress p;
     p.granular_temperature = 0.0;
     if (phi > packed_fraction) {
-      // Plastic regime: P* = A (ε_g* − ε_g)^n with ε_g* − ε_g = φ − (1 − ε_g*).
-      const double excess = phi - packed_fraction;
-      const double n = m_constants.plastic_exponent;
-      p.pressure = m_constants.plastic_coefficient * std::pow(excess, n);
-      p.pressure_derivative = m_constants.plastic_coefficient * n * std::pow(excess, n - 1.0);
+      // Plastic regime: P* = A (ε_g* − ε_g)^n.
+      const auto plastic = m_constants.plastic.at(phi);
+      p.pressure = plastic.pressure;
+      p.pressure_derivative = plastic.derivative;
       p.shear_viscosity =
           m_limits.rate_independent_viscosity(p.pressure * sin_friction_angle, shear_rate);
       return p;
@@ -91,11 +90,13 @@ void MfixDefault::evaluate(const Material& material, const SolidsState& in,
   });
 }
 
+double MfixDefault::packing_limit(const Material& /*material*/) const {
+  return m_constants.plastic.packed_fraction();
+}
+
 namespace {
 Constants read_constants(const Coefficients& c) {
-  return {.packed_gas_fraction = real_coefficient(c, "packed_gas_fraction"),
-          .plastic_coefficient = real_coefficient(c, "plastic_coefficient"),
-          .plastic_exponent = real_coefficient(c, "plastic_exponent"),
+  return {.plastic = PlasticPressure::read(c),
           .internal_friction_angle = real_coefficient(c, "internal_friction_angle")};
 }
 
@@ -103,13 +104,8 @@ Constants read_constants(const Coefficients& c) {
     {.name = "mfix-default",
      .summary = "MFIX default: Lun et al. kinetic theory, Schaeffer friction, plastic pressure",
      .coefficients = concatenate(
-         {{real_spec("packed_gas_fraction", "-", 0.4, 0.2, 0.6,
-                     "ε_g* [-] (MFIX EP_STAR): below this gas fraction the plastic regime holds."),
-           real_spec("plastic_coefficient", "Pa", 1e24, 0.0, 1e30,
-                     "A [Pa]: plastic pressure P* = A (ε_g* − ε_g)^n (MFIX: 10²⁵ dyn/cm²)."),
-           real_spec("plastic_exponent", "-", 10.0, 1.0, 20.0,
-                     "n [-]: exponent of the plastic pressure (MFIX: 10)."),
-           real_spec("internal_friction_angle", "deg", 30.0, 0.0, 90.0,
+         {PlasticPressure::specs(),
+          {real_spec("internal_friction_angle", "deg", Constants{}.internal_friction_angle, 0.0, 90.0,
                      "φ_f [deg] (MFIX PHI): Schaeffer's frictional viscosity P* sin φ_f/γ̇_s.")},
           DiluteLimit::specs(),
           ViscosityLimits::specs(100.0)}),

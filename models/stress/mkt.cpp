@@ -116,6 +116,8 @@ void Mkt::evaluate(const Material& material, const SolidsState& in, SolidsStress
   });
 }
 
+double Mkt::packing_limit(const Material& material) const { return chialvo2012::critical_fraction(material.friction); }
+
 namespace {
 Constants read_constants(const Coefficients& c) {
   return {.transition_inertial_number = real_coefficient(c, "i0"),
@@ -129,15 +131,15 @@ Constants read_constants(const Coefficients& c) {
     {.name = "mkt",
      .summary = "Modified kinetic theory (Chialvo & Sundaresan 2013; App. B Tables I–II)",
      .coefficients = concatenate(
-         {{real_spec("i0", "-", 0.2, 1e-6, 10.0,
+         {{real_spec("i0", "-", Constants{}.transition_inertial_number, 1e-6, 10.0,
                      "I_0 [-]: transition modified inertial number of χ(I′), App. B Eq. 41, "
                      "Table II."),
-           real_spec("alpha", "-", 0.36, 0.0, 10.0,
+           real_spec("alpha", "-", Constants{}.dense_slope, 0.0, 10.0,
                      "α [-]: dense-regime slope of η in I′, App. B Eqs. 42, 49, Table II."),
-           real_spec("alpha_1", "-", 0.06, 0.0, 10.0,
+           real_spec("alpha_1", "-", Constants{}.dense_temperature, 0.0, 10.0,
                      "α₁ [-]: dense temperature T = α₁(γ̇d)²/(φ_c − φ)^{1/2}, App. B Eq. 27, "
                      "Table II."),
-           real_spec("alpha_2", "-", 0.58, 0.0, 10.0,
+           real_spec("alpha_2", "-", Constants{}.radial_distribution_scale, 0.0, 10.0,
                      "α₂ [-]: dense part of g0 = g0_CS + α₂φ²/(φ_c − φ)^{3/2}, App. B Eq. 31, "
                      "Table II."),
            choice_spec("psi_exponent", "report", {"report", "openfoam"},

@@ -15,6 +15,7 @@
 #include <string>
 
 #include "models/dual.hpp"
+#include "models/rdf/radial_distribution.hpp"
 #include "models/stress/dense_limit.hpp"
 #include "models/stress/dilute_limit.hpp"
 #include "models/stress/regularization.hpp"
@@ -27,8 +28,8 @@ struct Constants {
   double transition_inertial_number = 0.2;  // I_0 [-]
   double dense_slope = 0.36;                // α [-], dense prefactor of I′ in η (Eq. 42)
   double dense_temperature = 0.06;          // α₁ [-], Eq. 27
-  double radial_distribution_scale = 0.58;  // α₂ [-], Eq. 31
-  double psi_exponent = -2.0 / 3.0;         // exponent of (1 − e²) in ψ, Eq. 32
+  double radial_distribution_scale = rdf::chialvo_sundaresan_scale;  // α₂ [-], Eq. 31
+  double psi_exponent = -2.0 / 3.0;  // exponent of (1 − e²) in ψ, Eq. 32
 };
 
 // App. B Eqs. 22–23: e_eff = e − (3/2) μ exp(−3μ).
@@ -72,6 +73,8 @@ class Mkt final : public SolidsStressModel {
   std::string name() const override { return "mkt"; }
   void evaluate(const Material& material, const SolidsState& in, SolidsStress& out) const override;
   bool defines_temperature() const override { return true; }
+  // φ_max = φ_c(μ) of App. A Table I, where g0 is capped (dense_limit.hpp).
+  double packing_limit(const Material& material) const override;
 
  private:
   Constants m_constants;

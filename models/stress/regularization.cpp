@@ -4,9 +4,13 @@
 
 namespace bagnold::models {
 
+std::vector<CoefficientSpec> ViscosityLimits::specs() {
+  return specs(ViscosityLimits{}.max_viscosity);
+}
+
 std::vector<CoefficientSpec> ViscosityLimits::specs(double default_max_viscosity) {
   return {
-      real_spec("min_strain_rate", "1/s", 1e-3, 0.0, 1e3,
+      real_spec("min_strain_rate", "1/s", ViscosityLimits{}.min_strain_rate, 0.0, 1e3,
                 "γ̇_min [1/s]: rate-independent stresses get the viscosity τ/sqrt(γ̇² + γ̇_min²), "
                 "finite as γ̇ → 0 and exact for γ̇ ≫ γ̇_min."),
       real_spec("max_viscosity", "Pa s", default_max_viscosity, 1e-6, 1e12,

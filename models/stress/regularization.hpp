@@ -15,7 +15,9 @@ struct ViscosityLimits {
   double min_strain_rate = 1e-3;  // γ̇_min [1/s]
   double max_viscosity = 1e5;     // μ_max [Pa s]
 
-  static std::vector<CoefficientSpec> specs(double default_max_viscosity = 1e5);
+  // The two keys with the defaults above, or with another μ_max (mfix-default: MFIX's cap).
+  static std::vector<CoefficientSpec> specs();
+  static std::vector<CoefficientSpec> specs(double default_max_viscosity);
   static ViscosityLimits read(const Coefficients& c);
 
   // Viscosity of a stress τ that does not vanish with the shear rate.

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <memory>
+#include <string>
 
 #include "models/stress/friction_table.hpp"
 #include "models/stress/garzo_dufty.hpp"
@@ -11,8 +12,8 @@
 namespace bagnold::models::skt {
 
 template <class Real>
-KineticState<Real> kinetic_state(Real phi, const Material& material, rdf::Kind radial,
-                                 const DenseLimit& dense) {
+KineticState<Real> kinetic_state(Real phi, const Material& material,
+                                 const rdf::RadialDistribution& radial, const DenseLimit& dense) {
   const double critical = chialvo2012::critical_fraction(material.friction);
   const double e = material.restitution;
   KineticState<Real> s;
@@ -27,12 +28,14 @@ KineticState<Real> kinetic_state(Real phi, const Material& material, rdf::Kind r
   return s;
 }
 
-template KineticState<double> kinetic_state(double, const Material&, rdf::Kind, const DenseLimit&);
-template KineticState<Dual> kinetic_state(Dual, const Material&, rdf::Kind, const DenseLimit&);
+template KineticState<double> kinetic_state(double, const Material&,
+                                            const rdf::RadialDistribution&, const DenseLimit&);
+template KineticState<Dual> kinetic_state(Dual, const Material&, const rdf::RadialDistribution&,
+                                          const DenseLimit&);
 
-Skt::Skt(rdf::Kind radial, bool frictional_yield, const DenseLimit& dense,
+Skt::Skt(const rdf::RadialDistribution& radial, bool frictional_yield, const DenseLimit& dense,
          const DiluteLimit& dilute, const ViscosityLimits& limits)
-    : m_radial(radial),
+    : m_radial(&radial),
       m_frictional_yield(frictional_yield),
       m_dense(dense),
       m_dilute(dilute),
@@ -48,7 +51,7 @@ void Skt::evaluate(const Material& material, const SolidsState& in, SolidsStress
   evaluate_cells_dilute_limited(m_dilute, material, in, out,
                                 [&](double phi, double shear_rate, double) {
     PointStress p;
-    const auto s = kinetic_state(Dual::variable(phi), material, m_radial, m_dense);
+    const auto s = kinetic_state(Dual::variable(phi), material, *m_radial, m_dense);
     // Eq. 1 with T = (J/K)(γ̇d)²: p = ρ_s H (J/K)(γ̇d)², differentiated at fixed γ̇.
     const auto k = kinetic_dense_pressure(phi, shear_rate, material, s.pressure_factor,
                                           s.temperature_factor, critical, m_dense);
@@ -66,14 +69,25 @@ void Skt::evaluate(const Material& material, const SolidsState& in, SolidsStress
   });
 }
 
+double Skt::packing_limit(const Material& material) const { return chialvo2012::critical_fraction(material.friction); }
+
 namespace {
+// "g0 [-]: a (its equation), b (…) or c (…), to share MKT's jamming point.", from the table.
+std::string radial_distribution_doc() {
+  const auto& table = rdf::radial_distributions();
+  std::string doc = "g0 [-]: ";
+  for (std::size_t i = 0; i < table.size(); ++i)
+    doc += (i == 0 ? "" : i + 1 == table.size() ? " or " : ", ") + table[i].name + " (" +
+           table[i].summary + ")";
+  return doc + ", to share MKT's jamming point.";
+}
+
 [[maybe_unused]] const bool registered = stress_registry().add(
     {.name = "skt",
      .summary = "Standard kinetic theory: Garzó–Dufty, algebraic temperature (App. B Eqs. 1–18)",
      .coefficients = concatenate(
-         {{choice_spec("radial_distribution", "carnahan-starling", rdf::kind_names(),
-                       "g0 [-]: carnahan-starling (App. B Eq. 11), torquato (Eq. 12, product form, "
-                       "φ_c(μ)) or mkt (Eq. 31, φ_c(μ)), to share MKT's jamming point."),
+         {{choice_spec("radial_distribution", "carnahan-starling",
+                       rdf::radial_distribution_names(), radial_distribution_doc()),
            choice_spec("frictional_yield", "off", {"off", "on"},
                        "Quasi-static yield stress η_s(μ) P_qs [-] (App. A Table II) added to the "
                        "kinetic shear stress: off = the report's SKT, frictionless in shear; on "
@@ -83,7 +97,7 @@ namespace {
           ViscosityLimits::specs()}),
      .make = [](const Coefficients& c) -> std::unique_ptr<SolidsStressModel> {
        return std::make_unique<Skt>(
-           rdf::kind_from_name(string_coefficient(c, "radial_distribution")),
+           rdf::radial_distribution(string_coefficient(c, "radial_distribution")),
            string_coefficient(c, "frictional_yield") == "on", DenseLimit::read(c),
            DiluteLimit::read(c), ViscosityLimits::read(c));
      }});

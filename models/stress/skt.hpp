@@ -31,21 +31,23 @@ struct KineticState {
 };
 
 template <class Real>
-KineticState<Real> kinetic_state(Real phi, const Material& material, rdf::Kind radial,
-                                 const DenseLimit& dense);
+KineticState<Real> kinetic_state(Real phi, const Material& material,
+                                 const rdf::RadialDistribution& radial, const DenseLimit& dense);
 
 class Skt final : public SolidsStressModel {
  public:
   // frictional_yield: add the quasi-static yield stress η_s(μ) P_qs of the dense limit (off in
   // the report's SKT, which "does not consider ... the role of frictional contact").
-  Skt(rdf::Kind radial, bool frictional_yield, const DenseLimit& dense, const DiluteLimit& dilute,
-      const ViscosityLimits& limits);
+  Skt(const rdf::RadialDistribution& radial, bool frictional_yield, const DenseLimit& dense,
+      const DiluteLimit& dilute, const ViscosityLimits& limits);
   std::string name() const override { return "skt"; }
   void evaluate(const Material& material, const SolidsState& in, SolidsStress& out) const override;
   bool defines_temperature() const override { return true; }
+  // φ_max = φ_c(μ) of App. A Table I, where g0 is capped (dense_limit.hpp).
+  double packing_limit(const Material& material) const override;
 
  private:
-  rdf::Kind m_radial;
+  const rdf::RadialDistribution* m_radial;  // an entry of rdf::radial_distributions()
   bool m_frictional_yield;
   DenseLimit m_dense;
   DiluteLimit m_dilute;

@@ -16,12 +16,7 @@ blended::Constants constants_at(double friction, const Constants& k) {
   c.intermediate = k.intermediate;
   c.yield_stress_ratio = chialvo2012::yield_stress_ratio(friction);  // A Table II
   c.inertial = k.inertial;
-  c.transition_inertial_number = k.transition_inertial_number;
-  c.hard_rise = k.hard_rise;
-  c.hard_exponent = k.hard_exponent;
-  c.transition_shear_rate = k.transition_shear_rate;
-  c.soft_drop = k.soft_drop;
-  c.soft_exponent = k.soft_exponent;
+  c.stress_ratio = k.stress_ratio;
   c.onset_smoothing = k.onset_smoothing;
   return c;  // no cohesion: α_coh = α₃ = 0
 }
@@ -45,13 +40,14 @@ void SteadyShear::evaluate(const Material& material, const SolidsState& in,
                                 });
 }
 
+double SteadyShear::packing_limit(const Material& material) const { return chialvo2012::critical_fraction(material.friction); }
+
 namespace {
 Constants read_constants(const Coefficients& c) {
-  Constants constants{.inertial = real_coefficient(c, "alpha_inert"),
+  return {.inertial = real_coefficient(c, "alpha_inert"),
           .intermediate = real_coefficient(c, "alpha_int"),
-          .onset_smoothing = real_coefficient(c, "onset_smoothing")};
-  blended::read_stress_ratio_constants(c, constants);
-  return constants;
+          .stress_ratio = blended::read_stress_ratio(c),
+          .onset_smoothing = read_onset_smoothing(c)};
 }
 
 [[maybe_unused]] const bool registered = stress_registry().add(
@@ -64,10 +60,7 @@ Constants read_constants(const Coefficients& c) {
            real_spec("alpha_int", "-", Constants{}.intermediate, 0.0, 10.0,
                      "α_int [-]: intermediate pressure p d/k = α_int γ̂^{1/2}, App. A Eq. 9, "
                      "Table II."),
-           real_spec("onset_smoothing", "-", Constants{}.onset_smoothing, 0.0, 0.1,
-                     "x_s [-]: volume-fraction width over which |φ − φ_c|^{2/3} (App. A Eq. 8) is "
-                     "smoothed (quadratic below x_s) so that dP_s/dε_s is finite at φ_c; 1e-4 "
-                     "makes a packed bed ~100x stiffer (docs/models.md).")},
+           onset_smoothing_spec()},
           blended::stress_ratio_specs("App. A Eq. 11", "App. A Eq. 12", "Table II"),
           DiluteLimit::specs(DiluteLimit::Anchor::tangent),
           ViscosityLimits::specs()}),

@@ -14,15 +14,10 @@ namespace bagnold::models::steady_shear {
 
 // App. A's μ-independent constants (Table II), deck-overridable.
 struct Constants {
-  double inertial = 0.021;                   // α_inert
-  double intermediate = 0.099;               // α_int
-  double transition_inertial_number = 0.32;  // I_0
-  double hard_rise = 0.37;                   // α₁
-  double hard_exponent = 1.5;                // β₁
-  double transition_shear_rate = 0.1;        // γ̂_0
-  double soft_drop = 0.2;                    // α₂
-  double soft_exponent = 1.0;                // β₂
-  double onset_smoothing = 1e-2;             // x_s
+  double inertial = 0.021;            // α_inert
+  double intermediate = 0.099;        // α_int
+  blended::StressRatio stress_ratio;  // I_0, α₁, β₁, γ̂_0, α₂, β₂: both models' defaults
+  double onset_smoothing = default_onset_smoothing;  // x_s
 };
 
 // The blended constants at friction μ: App. A Tables I–II, ε = 2/3, χ = 2 (Eqs. 8–10).
@@ -34,6 +29,8 @@ class SteadyShear final : public SolidsStressModel {
   std::string name() const override { return "steady-shear"; }
   void evaluate(const Material& material, const SolidsState& in, SolidsStress& out) const override;
   bool defines_temperature() const override { return false; }
+  // φ_max = φ_c(μ) of App. A Table I, the rheology's critical fraction.
+  double packing_limit(const Material& material) const override;
 
  private:
   Constants m_constants;

@@ -54,12 +54,7 @@ blended::Constants constants_at(double friction, const Constants& k) {
   c.cohesive_1 = table_cohesive_1()(friction);
   c.cohesive_stress_ratio = table_cohesive_stress_ratio()(friction);
   c.inertial = k.inertial;
-  c.transition_inertial_number = k.transition_inertial_number;
-  c.hard_rise = k.hard_rise;
-  c.hard_exponent = k.hard_exponent;
-  c.transition_shear_rate = k.transition_shear_rate;
-  c.soft_drop = k.soft_drop;
-  c.soft_exponent = k.soft_exponent;
+  c.stress_ratio = k.stress_ratio;
   c.cohesive_onset_fraction = k.cohesive_onset_fraction;
   c.cohesive_2 = k.cohesive_2;
   c.cohesive_rate = k.cohesive_rate;
@@ -79,36 +74,35 @@ void SteadyShearCohesive::evaluate(const Material& material, const SolidsState& 
   });
 }
 
+double SteadyShearCohesive::packing_limit(const Material& material) const { return chialvo2012::critical_fraction(material.friction); }
+
 namespace {
 Constants read_constants(const Coefficients& c) {
-  Constants constants{.cohesive_onset_fraction = real_coefficient(c, "phi_a"),
+  return {.cohesive_onset_fraction = real_coefficient(c, "phi_a"),
           .inertial = real_coefficient(c, "alpha_inert"),
           .cohesive_2 = real_coefficient(c, "alpha_coh_2"),
+          .stress_ratio = blended::read_stress_ratio(c),
           .cohesive_rate = real_coefficient(c, "alpha_4"),
-          .onset_smoothing = real_coefficient(c, "onset_smoothing")};
-  blended::read_stress_ratio_constants(c, constants);
-  return constants;
+          .onset_smoothing = read_onset_smoothing(c)};
 }
 
 [[maybe_unused]] const bool registered = stress_registry().add(
     {.name = "steady-shear-cohesive",
      .summary = "Cohesive blended rheology (Gu, Chialvo & Sundaresan 2014; App. D Eqs. 7–19)",
      .coefficients = concatenate(
-         {{real_spec("phi_a", "-", 0.45, 0.0, 0.7,
+         {{real_spec("phi_a", "-", Constants{}.cohesive_onset_fraction, 0.0, 0.7,
                      "φ_a [-]: cohesive pressure p d/k = α_coh,1 Bo* |φ − φ_a|/|φ_c − φ|, "
                      "App. D Eq. 11, Table I."),
-           real_spec("alpha_inert", "-", 0.015, 0.0, 10.0,
+           real_spec("alpha_inert", "-", Constants{}.inertial, 0.0, 10.0,
                      "α_inert [-]: inertial pressure α_inert γ̂²/|φ_c − φ|^χ, App. D Eq. 9, "
                      "Table I."),
-           real_spec("alpha_coh_2", "-", 0.008, 0.0, 10.0,
+           real_spec("alpha_coh_2", "-", Constants{}.cohesive_2, 0.0, 10.0,
                      "α_coh,2 [-]: cohesive floor of the intermediate pressure α_coh,2 "
                      "Bo*^{ε/(ε+χ)}, App. D Eq. 12, Table I."),
-           real_spec("alpha_4", "-", 0.1, 1e-9, 10.0,
+           real_spec("alpha_4", "-", Constants{}.cohesive_rate, 1e-9, 10.0,
                      "α₄ [-]: cohesive-to-inertial scaled shear rate α₄√Bo* in η, App. D Eq. 19, "
                      "Table I."),
-           real_spec("onset_smoothing", "-", 1e-4, 0.0, 0.01,
-                     "x_s [-]: volume-fraction width over which |φ − φ_c|^ε (App. D Eq. 7) is "
-                     "smoothed so that dP_s/dε_s is finite at φ_c.")},
+           onset_smoothing_spec()},
           blended::stress_ratio_specs("App. D Eq. 14", "App. D Eq. 15", "Table I"),
           ViscosityLimits::specs()}),
      .make = [](const Coefficients& c) -> std::unique_ptr<SolidsStressModel> {

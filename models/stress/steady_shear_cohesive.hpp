@@ -16,17 +16,12 @@ namespace bagnold::models::steady_shear_cohesive {
 
 // App. D's μ-independent constants (Table I), deck-overridable.
 struct Constants {
-  double cohesive_onset_fraction = 0.45;     // φ_a
-  double inertial = 0.015;                   // α_inert
-  double cohesive_2 = 0.008;                 // α_coh,2
-  double transition_inertial_number = 0.32;  // I_0
-  double hard_rise = 0.37;                   // α₁
-  double hard_exponent = 1.5;                // β₁
-  double transition_shear_rate = 0.1;        // γ̂_0
-  double soft_drop = 0.2;                    // α₂
-  double soft_exponent = 1.0;                // β₂
-  double cohesive_rate = 0.1;                // α₄
-  double onset_smoothing = 1e-4;             // x_s
+  double cohesive_onset_fraction = 0.45;  // φ_a
+  double inertial = 0.015;                // α_inert
+  double cohesive_2 = 0.008;              // α_coh,2
+  blended::StressRatio stress_ratio;  // I_0, α₁, β₁, γ̂_0, α₂, β₂: both models' defaults
+  double cohesive_rate = 0.1;         // α₄
+  double onset_smoothing = default_onset_smoothing;  // x_s
 };
 
 // The blended constants at friction μ from App. D Table I.
@@ -38,6 +33,9 @@ class SteadyShearCohesive final : public SolidsStressModel {
   std::string name() const override { return "steady-shear-cohesive"; }
   void evaluate(const Material& material, const SolidsState& in, SolidsStress& out) const override;
   bool defines_temperature() const override { return false; }
+  // φ_c(μ) of App. A Table I, as for steady-shear (what the walls used before the interface
+  // had this call), not App. D Table I's own φ_c: see docs/models.md, "Packing limit".
+  double packing_limit(const Material& material) const override;
 
  private:
   Constants m_constants;

@@ -4,10 +4,13 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <stdexcept>
 #include <string>
 
+#include "models/stress/friction_table.hpp"
 #include "models/wall/wall_coefficient.hpp"
+#include "models/wall/wall_law.hpp"
 
 namespace bagnold::models::wall {
 
@@ -103,5 +106,34 @@ double DenseSlip::slip_coefficient(const NearWallState& state) const {
 double DenseSlip::wall_coefficient(const NearWallState& state, double wall_distance) const {
   return wall::wall_coefficient(slip_coefficient(state), state.viscosity, wall_distance);
 }
+
+namespace {
+// The registered law, with η_s(μ) of App. A Table II (the bulk rheology's table, model-notes).
+class DenseSlipLaw final : public WallLaw {
+ public:
+  explicit DenseSlipLaw(const WallLawInput& in)
+      : m_slip(in.material, DenseSlipWall{.wall_friction = in.wall.wall_friction},
+               chialvo2012::yield_stress_ratio(in.material.friction)) {}
+  std::string name() const override { return "dense-slip"; }
+  double coefficient(const NearWallSolids& near, double wall_distance) const override {
+    return m_slip.wall_coefficient({.pressure = near.pressure,
+                                    .viscosity = std::max(near.viscosity, 0.0),
+                                    .strain_rate = near.strain_rate},
+                                   wall_distance);
+  }
+  bool slips() const override { return true; }
+
+ private:
+  DenseSlip m_slip;
+};
+
+[[maybe_unused]] const bool registered = wall_law_registry().add(
+    {.name = "dense-slip",
+     .summary = "dense-flow wall slip of Chialvo et al. (report App. C): wall_friction",
+     .coefficients = {},
+     .make = [](const WallLawInput& in) -> std::unique_ptr<WallLaw> {
+       return std::make_unique<DenseSlipLaw>(in);
+     }});
+}  // namespace
 
 }  // namespace bagnold::models::wall

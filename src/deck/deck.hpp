@@ -1,7 +1,9 @@
 #pragma once
 // The resolved deck: every value a run uses, in SI units, after defaults, overrides and checks.
-// The keys, units, defaults and ranges are declared once, in src/deck/sections.cpp; the key
-// reference (docs/deck.md) is generated from those declarations by `bagnold keys`.
+// A key's default is the initializer of its member here (or in models/material.hpp), written
+// nowhere else; its unit, range and doc are declared once, in src/deck/sections.cpp, whose
+// `.init()` says the key takes that default. The key reference (docs/deck.md) is generated from
+// both by `bagnold keys`.
 
 #include <array>
 #include <map>
@@ -94,8 +96,8 @@ struct ModelChoice {
 };
 
 struct Models {
-  ModelChoice solids_stress;
-  ModelChoice drag;
+  ModelChoice solids_stress{.name = "mkt", .coefficients = {}};
+  ModelChoice drag{.name = "gidaspow", .coefficients = {}};
 };
 
 struct InitialRegion {

@@ -4,8 +4,13 @@
 // configuration that `bagnold check` prints and the key reference in docs/deck.md.
 //
 //   const Section<Solids> solids_section{"solids", "Granular phase", {
-//       key(&Solids::diameter, "diameter").unit("m").init(1e-3).above(0.0).doc("d_p"),
+//       key(&Solids::diameter, "diameter").unit("m").init().above(0.0).doc("d_p"),
 //   }};
+//
+// A default is written once, as the member's initializer in the struct (deck.hpp,
+// models/material.hpp): init() declares that the key has one and takes it from a
+// default-constructed struct. A key without init() is required, or has no default to show
+// (a block's shape-dependent keys, a wall law's parameters).
 
 #include <toml++/toml.h>
 
@@ -83,7 +88,11 @@ class Key {
 
   Key& unit(std::string u) { m_info.unit = std::move(u); return *this; }
   Key& doc(std::string d) { m_info.doc = std::move(d); return *this; }
-  Key& init(V value) { m_default = std::move(value); return *this; }
+  // The key's default: the member's value in a default-constructed T (its initializer).
+  Key& init() { return init_from(T{}); }
+  // The member's value in `prototype`, for a struct that fills several tables with different
+  // defaults (ModelChoice: [models.solids_stress] and [models.drag], deck.hpp's Models).
+  Key& init_from(const T& prototype) { m_default = prototype.*m_member; return *this; }
   Key& required() { m_info.required = true; return *this; }
   Key& above(double lo) { m_lo = lo; m_lo_open = true; return *this; }
   Key& at_least(double lo) { m_lo = lo; m_lo_open = false; return *this; }

@@ -1,5 +1,7 @@
 #include "src/deck/sections.hpp"
 
+#include "models/wall/wall_law.hpp"
+
 namespace bagnold::deck {
 
 namespace {
@@ -7,8 +9,6 @@ const std::vector<std::string> boundary_types = {"no_slip_wall",     "free_slip_
                                                  "moving_wall",      "pressure_outflow",
                                                  "pressure_inflow",  "mass_inflow"};
 const std::vector<std::string> wall_types = {"no_slip_wall", "free_slip_wall"};
-const std::vector<std::string> solids_wall_conditions = {"no-slip", "free-slip", "johnson-jackson",
-                                                         "dense-slip"};
 }  // namespace
 
 bool Grid::is_periodic(int direction) const {
@@ -20,14 +20,14 @@ bool Grid::is_periodic(int direction) const {
 
 const Section<RunControl>& run_section() {
   static const Section<RunControl> s{"run", "Run control", {
-      key(&RunControl::title, "title").init("").doc("Free text shown in logs and snapshots."),
+      key(&RunControl::title, "title").init().doc("Free text shown in logs and snapshots."),
       key(&RunControl::end_time, "end_time").unit("s").required().at_least(0.0)
           .doc("Simulated time at which the run stops."),
-      key(&RunControl::dt_initial, "dt_initial").unit("s").init(1e-4).above(0.0)
+      key(&RunControl::dt_initial, "dt_initial").unit("s").init().above(0.0)
           .doc("First time step; later steps adapt between dt_min and dt_max."),
-      key(&RunControl::dt_min, "dt_min").unit("s").init(1e-7).above(0.0)
+      key(&RunControl::dt_min, "dt_min").unit("s").init().above(0.0)
           .doc("Smallest time step; a step that fails at dt_min stops the run."),
-      key(&RunControl::dt_max, "dt_max").unit("s").init(1e-2).above(0.0)
+      key(&RunControl::dt_max, "dt_max").unit("s").init().above(0.0)
           .doc("Largest time step."),
   }};
   return s;
@@ -35,7 +35,7 @@ const Section<RunControl>& run_section() {
 
 const Section<Physics>& physics_section() {
   static const Section<Physics> s{"physics", "Body forces", {
-      key(&Physics::gravity, "gravity").unit("m/s^2").init({0.0, 0.0, -9.81})
+      key(&Physics::gravity, "gravity").unit("m/s^2").init()
           .doc("Gravitational acceleration vector (tilt it for an inclined chute)."),
   }};
   return s;
@@ -43,7 +43,7 @@ const Section<Physics>& physics_section() {
 
 const Section<Grid>& grid_section() {
   static const Section<Grid> s{"grid", "Cartesian grid", {
-      key(&Grid::periodic, "periodic").init(std::vector<std::string>{}).one_of({"x", "y", "z"})
+      key(&Grid::periodic, "periodic").init().one_of({"x", "y", "z"})
           .doc("Directions whose opposite faces are a periodic pair."),
   }, {"x", "y", "z"}};
   return s;
@@ -51,10 +51,10 @@ const Section<Grid>& grid_section() {
 
 const Section<Axis>& axis_section() {
   static const Section<Axis> s{"grid.x", "One grid direction ([grid.x], [grid.y], [grid.z])", {
-      key(&Axis::min, "min").unit("m").init(0.0).doc("Lower end of the domain."),
+      key(&Axis::min, "min").unit("m").init().doc("Lower end of the domain."),
       key(&Axis::max, "max").unit("m").required().doc("Upper end of the domain (> min)."),
       key(&Axis::cells, "cells").required().within(1, 1 << 20).doc("Number of cells."),
-      key(&Axis::ratio, "ratio").unit("-").init(1.0).within(0.01, 100.0)
+      key(&Axis::ratio, "ratio").unit("-").init().within(0.01, 100.0)
           .doc("Width of the last cell over the first: 1 is uniform, otherwise geometric."),
   }};
   return s;
@@ -62,7 +62,7 @@ const Section<Axis>& axis_section() {
 
 const Section<Geometry>& geometry_section() {
   static const Section<Geometry> s{"geometry", "Geometry", {
-      key(&Geometry::default_wall, "default_wall").init("no_slip_wall").one_of(wall_types)
+      key(&Geometry::default_wall, "default_wall").init().one_of(wall_types)
           .doc("Wall type of every boundary cell no [[boundary]] region claims."),
   }, {"block"}};
   return s;
@@ -72,7 +72,7 @@ const Section<Block>& block_section() {
   static const Section<Block> s{"geometry.block", "Blocking primitives ([[geometry.block]])", {
       key(&Block::shape, "shape").required().one_of({"box", "half_space", "cylinder", "cone"})
           .doc("Primitive; a cell is blocked when its centre is inside (or outside) it."),
-      key(&Block::blocks, "blocks").init("inside").one_of({"inside", "outside"})
+      key(&Block::blocks, "blocks").init().one_of({"inside", "outside"})
           .doc("Which side is solid; for cylinder/cone, outside means around it between its ends."),
       key(&Block::min, "min").unit("m").doc("box: lower corner."),
       key(&Block::max, "max").unit("m").doc("box: upper corner."),
@@ -103,24 +103,25 @@ const Section<BoundaryRegion>& boundary_section() {
           .doc("Name used in the monitor columns (mass flux through the region)."),
       key(&BoundaryRegion::type, "type").required().one_of(boundary_types)
           .doc("Condition on the faces between the region's cells and the fluid."),
-      key(&BoundaryRegion::face, "face").init("any")
+      key(&BoundaryRegion::face, "face").init()
           .one_of({"x-", "x+", "y-", "y+", "z-", "z+", "internal", "any"})
           .doc("Domain face the region lies on, or internal (blocked cells inside the domain)."),
-      key(&BoundaryRegion::min, "min").unit("m").init({-1e30, -1e30, -1e30})
+      key(&BoundaryRegion::min, "min").unit("m").init()
           .doc("Lower corner of the box that selects boundary cells (by their centres)."),
-      key(&BoundaryRegion::max, "max").unit("m").init({1e30, 1e30, 1e30})
+      key(&BoundaryRegion::max, "max").unit("m").init()
           .doc("Upper corner of the selecting box."),
-      key(&BoundaryRegion::pressure, "pressure").unit("Pa").init(101325.0).above(0.0)
+      key(&BoundaryRegion::pressure, "pressure").unit("Pa").init().above(0.0)
           .doc("pressure_inflow / pressure_outflow: gas pressure outside."),
-      key(&BoundaryRegion::wall_velocity, "wall_velocity").unit("m/s").init({0.0, 0.0, 0.0})
+      key(&BoundaryRegion::wall_velocity, "wall_velocity").unit("m/s").init()
           .doc("moving_wall: velocity of the wall (its tangential part is used)."),
-      key(&BoundaryRegion::gas_velocity, "gas_velocity").unit("m/s").init({0.0, 0.0, 0.0})
+      key(&BoundaryRegion::gas_velocity, "gas_velocity").unit("m/s").init()
           .doc("mass_inflow: gas velocity."),
-      key(&BoundaryRegion::solids_velocity, "solids_velocity").unit("m/s").init({0.0, 0.0, 0.0})
+      key(&BoundaryRegion::solids_velocity, "solids_velocity").unit("m/s").init()
           .doc("mass_inflow: solids velocity."),
-      key(&BoundaryRegion::solids_fraction, "solids_fraction").unit("-").init(0.0).within(0.0, 1.0)
+      key(&BoundaryRegion::solids_fraction, "solids_fraction").unit("-").init().within(0.0, 1.0)
           .doc("mass_inflow: solids volume fraction ε_s."),
-      key(&BoundaryRegion::solids_wall, "solids_wall").init("no-slip").one_of(solids_wall_conditions)
+      key(&BoundaryRegion::solids_wall, "solids_wall").init()
+          .one_of(models::wall::wall_law_registry().names())
           .doc("no_slip_wall / moving_wall: the solids' tangential wall condition (the gas keeps "
                "`type`): no-slip, free-slip, johnson-jackson (specularity, wall_restitution) or "
                "dense-slip (wall_friction; the report's App. C slip). free_slip_wall is free slip "
@@ -140,11 +141,11 @@ const Section<BoundaryRegion>& boundary_section() {
 
 const Section<Gas>& gas_section() {
   static const Section<Gas> s{"gas", "Gas phase", {
-      key(&Gas::enabled, "enabled").init(true)
+      key(&Gas::enabled, "enabled").init()
           .doc("false: granular flow in vacuum, no gas equations are solved."),
-      key(&Gas::density, "density").unit("kg/m^3").init(1.2).above(0.0).doc("ρ_g."),
-      key(&Gas::viscosity, "viscosity").unit("Pa s").init(1.8e-5).above(0.0).doc("μ_g."),
-      key(&Gas::reference_pressure, "reference_pressure").unit("Pa").init(101325.0).above(0.0)
+      key(&Gas::density, "density").unit("kg/m^3").init().above(0.0).doc("ρ_g."),
+      key(&Gas::viscosity, "viscosity").unit("Pa s").init().above(0.0).doc("μ_g."),
+      key(&Gas::reference_pressure, "reference_pressure").unit("Pa").init().above(0.0)
           .doc("Initial gas pressure at the top of the domain."),
   }};
   return s;
@@ -153,15 +154,15 @@ const Section<Gas>& gas_section() {
 const Section<models::Material>& solids_section() {
   using models::Material;
   static const Section<Material> s{"solids", "Granular phase", {
-      key(&Material::diameter, "diameter").unit("m").init(1e-3).above(0.0).doc("d_p."),
-      key(&Material::density, "density").unit("kg/m^3").init(2500.0).above(0.0).doc("ρ_s."),
-      key(&Material::restitution, "restitution").unit("-").init(0.8).within(0.0, 1.0)
+      key(&Material::diameter, "diameter").unit("m").init().above(0.0).doc("d_p."),
+      key(&Material::density, "density").unit("kg/m^3").init().above(0.0).doc("ρ_s."),
+      key(&Material::restitution, "restitution").unit("-").init().within(0.0, 1.0)
           .doc("e, normal coefficient of restitution."),
-      key(&Material::friction, "friction").unit("-").init(0.3).within(0.0, 1.0)
+      key(&Material::friction, "friction").unit("-").init().within(0.0, 1.0)
           .doc("μ, interparticle friction coefficient (the report's tables cover [0, 1])."),
-      key(&Material::stiffness, "stiffness").unit("N/m").init(1e5).above(0.0)
+      key(&Material::stiffness, "stiffness").unit("N/m").init().above(0.0)
           .doc("k, normal contact stiffness (rheology models: quasi-static pressure)."),
-      key(&Material::bond_number, "bond_number").unit("-").init(0.0).at_least(0.0)
+      key(&Material::bond_number, "bond_number").unit("-").init().at_least(0.0)
           .doc("Bo*, modified Bond number (steady-shear-cohesive)."),
   }, {"enabled", "momentum"}};
   return s;
@@ -169,8 +170,8 @@ const Section<models::Material>& solids_section() {
 
 const Section<Solids>& solids_switch_section() {
   static const Section<Solids> s{"solids", "Granular phase", {
-      key(&Solids::enabled, "enabled").init(true).doc("false: a single-phase (gas) run."),
-      key(&Solids::momentum, "momentum").init(true)
+      key(&Solids::enabled, "enabled").init().doc("false: a single-phase (gas) run."),
+      key(&Solids::momentum, "momentum").init()
           .doc("false: the solids stay as initialized (a fixed bed); the gas flows through them "
                "with ε_g and drag."),
   }};
@@ -179,7 +180,7 @@ const Section<Solids>& solids_switch_section() {
 
 const Section<ModelChoice>& solids_stress_section() {
   static const Section<ModelChoice> s{"models.solids_stress", "Solids-stress closure", {
-      key(&ModelChoice::name, "model").init("mkt")
+      key(&ModelChoice::name, "model").init_from(Models{}.solids_stress)
           .doc("Closure name; its constants go in [models.solids_stress.<model>]."),
   }};
   return s;
@@ -187,7 +188,7 @@ const Section<ModelChoice>& solids_stress_section() {
 
 const Section<ModelChoice>& drag_section() {
   static const Section<ModelChoice> s{"models.drag", "Gas-solids drag", {
-      key(&ModelChoice::name, "model").init("gidaspow")
+      key(&ModelChoice::name, "model").init_from(Models{}.drag)
           .doc("Drag law β; its constants go in [models.drag.<model>]."),
   }};
   return s;
@@ -195,15 +196,15 @@ const Section<ModelChoice>& drag_section() {
 
 const Section<InitialRegion>& initial_section() {
   static const Section<InitialRegion> s{"initial", "Initial state ([[initial]], later wins)", {
-      key(&InitialRegion::min, "min").unit("m").init({-1e30, -1e30, -1e30})
+      key(&InitialRegion::min, "min").unit("m").init()
           .doc("Lower corner of the box (cell centres inside are set)."),
-      key(&InitialRegion::max, "max").unit("m").init({1e30, 1e30, 1e30})
+      key(&InitialRegion::max, "max").unit("m").init()
           .doc("Upper corner of the box."),
-      key(&InitialRegion::solids_fraction, "solids_fraction").unit("-").init(0.0)
+      key(&InitialRegion::solids_fraction, "solids_fraction").unit("-").init()
           .within(0.0, 1.0).doc("ε_s."),
-      key(&InitialRegion::gas_velocity, "gas_velocity").unit("m/s").init({0.0, 0.0, 0.0})
+      key(&InitialRegion::gas_velocity, "gas_velocity").unit("m/s").init()
           .doc("Gas velocity."),
-      key(&InitialRegion::solids_velocity, "solids_velocity").unit("m/s").init({0.0, 0.0, 0.0})
+      key(&InitialRegion::solids_velocity, "solids_velocity").unit("m/s").init()
           .doc("Solids velocity."),
   }};
   return s;
@@ -211,50 +212,50 @@ const Section<InitialRegion>& initial_section() {
 
 const Section<Numerics>& numerics_section() {
   static const Section<Numerics> s{"numerics", "Discretization and solver controls", {
-      key(&Numerics::algorithm, "algorithm").init("simplec").one_of({"simplec", "simple"})
+      key(&Numerics::algorithm, "algorithm").init().one_of({"simplec", "simple"})
           .doc("Pressure-velocity coupling: SIMPLEC (d = A/(a_P − Σa_nb)) or SIMPLE (use relax_pressure ~0.3)."),
-      key(&Numerics::convection, "convection").init("superbee")
+      key(&Numerics::convection, "convection").init()
           .one_of({"upwind", "superbee", "muscl", "van_leer", "minmod"})
           .doc("Convection scheme: first-order upwind, or a TVD limiter by deferred correction."),
-      key(&Numerics::tolerance, "tolerance").unit("-").init(1e-4).within(1e-12, 1.0)
+      key(&Numerics::tolerance, "tolerance").unit("-").init().within(1e-12, 1.0)
           .doc("A step has converged when every normalized residual is below this."),
-      key(&Numerics::residual_normalization, "residual_normalization").init("velocity-scale")
+      key(&Numerics::residual_normalization, "residual_normalization").init()
           .one_of({"velocity-scale", "deviation"})
           .doc("Momentum residuals over Σ a_P U (U the largest velocity), or over "
                "Σ(|Lu − L1 ū| + |s − L1 ū|), the forces that do not cancel for a uniform field "
                "(OpenFOAM's): the latter lets no large viscosity hide an unbalanced force "
                "(the chute), at 1.6x the 10 mm bin's steps."),
-      key(&Numerics::net_force_residual, "net_force_residual").init(false)
+      key(&Numerics::net_force_residual, "net_force_residual").init()
           .doc("Whether each momentum residual must also have a small net: |Σ (s − L u)| over the "
                "phase's rows, against the phase's weight Σ ε ρ V |g|, below the tolerance. The "
                "row residuals' sum is the force the iterate leaves unbalanced on the whole phase; "
                "a sum of magnitudes can hide it (the free-slip chute at small dt, "
                "cases/chute/README.md). No effect without gravity."),
-      key(&Numerics::max_outer_iterations, "max_outer_iterations").init(40).within(1, 1000)
+      key(&Numerics::max_outer_iterations, "max_outer_iterations").init().within(1, 1000)
           .doc("SIMPLE outer iterations before the step is redone with dt / 2."),
-      key(&Numerics::easy_outer_iterations, "easy_outer_iterations").init(8).within(1, 1000)
+      key(&Numerics::easy_outer_iterations, "easy_outer_iterations").init().within(1, 1000)
           .doc("A step converged in at most this many iterations lets dt grow."),
-      key(&Numerics::hard_outer_iterations, "hard_outer_iterations").init(0).within(0, 1000)
+      key(&Numerics::hard_outer_iterations, "hard_outer_iterations").init().within(0, 1000)
           .doc("A step converged in more than this many iterations makes the next dt smaller by "
                "dt_growth (not below run.dt_max / 4), so dt settles where a step takes "
                "easy_outer_iterations to hard_outer_iterations; 0: dt shrinks only when a step "
                "fails (the default: where the iterations per step hardly depend on dt, as with a tight "
                "tolerance, shrinking only adds steps). Must exceed easy_outer_iterations."),
-      key(&Numerics::dt_growth, "dt_growth").unit("-").init(1.2).within(1.0, 2.0)
+      key(&Numerics::dt_growth, "dt_growth").unit("-").init().within(1.0, 2.0)
           .doc("Factor by which dt grows after an easy step (up to run.dt_max)."),
-      key(&Numerics::relax_velocity, "relax_velocity").unit("-").init(0.7).within(0.05, 1.0)
+      key(&Numerics::relax_velocity, "relax_velocity").unit("-").init().within(0.05, 1.0)
           .doc("Under-relaxation of the momentum equations, α_u."),
-      key(&Numerics::wall_shear_in_strain_rate, "wall_shear_in_strain_rate").init(false)
+      key(&Numerics::wall_shear_in_strain_rate, "wall_shear_in_strain_rate").init()
           .doc("Whether a stationary no-slip solids wall's shear enters the closure's strain rate "
                "in the cells beside it (ghost value −u_c, as MFIX), instead of one-sided interior "
                "differences."),
-      key(&Numerics::solids_bulk_viscosity_ratio, "solids_bulk_viscosity_ratio").unit("-").init(0.0)
+      key(&Numerics::solids_bulk_viscosity_ratio, "solids_bulk_viscosity_ratio").unit("-").init()
           .within(0.0, 100.0)
           .doc("r: the solids stress gains a bulk viscosity λ_s = r μ_s (σ = P_s I − 2 μ_s S − "
                "λ_s ∇·u I), which dissipates the work a rate-dependent P_s does on expansion. 0: "
                "none (the closures' own λ_s is not used)."),
       key(&Numerics::pressure_shear_rate_relaxation_time, "pressure_shear_rate_relaxation_time")
-          .unit("s").init(0.0).within(0.0, 1e3)
+          .unit("s").init().within(0.0, 1e3)
           .doc("τ_P: the closure's P_s and dP_s/dε_s are evaluated at a shear rate γ̇_P that "
                "relaxes towards the current one over τ_P in each cell (dγ̇_P/dt = (γ̇ − γ̇_P)/τ_P, "
                "implicit Euler, not advected; μ_s and Θ keep the current rate). The steady-state "
@@ -262,15 +263,15 @@ const Section<Numerics>& numerics_section() {
                "it holds, can depend on τ_P. It stops a rate-dependent P_s from following creep and "
                "bursts instantly in jammed zones (cases/chute/README.md). 0: P_s at the current "
                "rate."),
-      key(&Numerics::relax_pressure, "relax_pressure").unit("-").init(1.0).within(0.01, 1.0)
+      key(&Numerics::relax_pressure, "relax_pressure").unit("-").init().within(0.01, 1.0)
           .doc("Under-relaxation of the pressure correction, α_p."),
-      key(&Numerics::pressure_preconditioner, "pressure_preconditioner").init("hypre")
+      key(&Numerics::pressure_preconditioner, "pressure_preconditioner").init()
           .one_of({"hypre", "gamg"})
           .doc("Algebraic multigrid for the pressure correction: hypre BoomerAMG (restarts "
                "bit-exactly) or PETSc GAMG (restarts to ~1e-11: its setup carries state)."),
-      key(&Numerics::pressure_tolerance, "pressure_tolerance").unit("-").init(1e-4)
+      key(&Numerics::pressure_tolerance, "pressure_tolerance").unit("-").init()
           .within(1e-14, 0.5).doc("Relative tolerance of the pressure-correction solve."),
-      key(&Numerics::momentum_tolerance, "momentum_tolerance").unit("-").init(1e-4)
+      key(&Numerics::momentum_tolerance, "momentum_tolerance").unit("-").init()
           .within(1e-14, 0.5).doc("Relative tolerance of the momentum solves."),
   }};
   return s;
@@ -280,9 +281,9 @@ const Section<Output>& output_section() {
   static const Section<Output> s{"output", "Output", {
       key(&Output::directory, "directory").required()
           .doc("Where snapshots, the XDMF index and the monitor go (created if missing)."),
-      key(&Output::snapshot_interval, "snapshot_interval").unit("s").init(0.1).above(0.0)
+      key(&Output::snapshot_interval, "snapshot_interval").unit("s").init().above(0.0)
           .doc("Simulated time between HDF5 snapshots."),
-      key(&Output::progress, "progress").init("auto").one_of({"auto", "always", "never"})
+      key(&Output::progress, "progress").init().one_of({"auto", "always", "never"})
           .doc("Progress line on stderr: auto shows it only when stderr is a terminal."),
   }};
   return s;

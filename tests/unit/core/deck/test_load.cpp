@@ -6,7 +6,9 @@
 #include <algorithm>
 
 #include "models/stress/solids_stress.hpp"
+#include "models/wall/wall_law.hpp"
 #include "src/deck/load.hpp"
+#include "src/deck/sections.hpp"
 #include "tests/unit/core/deck/deck_test_support.hpp"
 
 namespace bagnold::tests {
@@ -46,6 +48,63 @@ TEST(DeckLoad, MinimalDeckGetsEveryDefault) {
   EXPECT_EQ(d.output.directory, "out");
   EXPECT_EQ(d.output.snapshot_interval, 0.1);
   EXPECT_EQ(d.output.progress, "auto");
+}
+
+// A default is written once, as the struct's initializer (deck.hpp): the key reference shows
+// that value, and a deck that leaves a table out gets exactly a default-constructed struct.
+template <class T>
+void expect_defaults_from(const deck::Section<T>& section, const T& prototype) {
+  for (const auto& k : section.keys) {
+    if (k.info.default_text.empty()) continue;  // required, or no default to show
+    EXPECT_EQ(k.info.default_text, k.show(prototype)) << section.name << "." << k.info.name;
+  }
+}
+
+TEST(DeckLoad, EveryDocumentedDefaultIsTheStructInitializer) {
+  expect_defaults_from(deck::run_section(), deck::RunControl{});
+  expect_defaults_from(deck::physics_section(), deck::Physics{});
+  expect_defaults_from(deck::grid_section(), deck::Grid{});
+  expect_defaults_from(deck::axis_section(), deck::Axis{});
+  expect_defaults_from(deck::geometry_section(), deck::Geometry{});
+  expect_defaults_from(deck::block_section(), deck::Block{});
+  expect_defaults_from(deck::boundary_section(), deck::BoundaryRegion{});
+  expect_defaults_from(deck::gas_section(), deck::Gas{});
+  expect_defaults_from(deck::solids_section(), models::Material{});
+  expect_defaults_from(deck::solids_switch_section(), deck::Solids{});
+  expect_defaults_from(deck::solids_stress_section(), deck::Models{}.solids_stress);
+  expect_defaults_from(deck::drag_section(), deck::Models{}.drag);
+  expect_defaults_from(deck::initial_section(), deck::InitialRegion{});
+  expect_defaults_from(deck::numerics_section(), deck::Numerics{});
+  expect_defaults_from(deck::output_section(), deck::Output{});
+  // Spot checks against the values themselves, so the test fails if both sides move together.
+  EXPECT_EQ(deck::Numerics{}.max_outer_iterations, 40);
+  EXPECT_EQ(deck::Models{}.drag.name, "gidaspow");
+}
+
+TEST(DeckLoad, SolidsWallChoicesAreTheWallLawRegistry) {
+  // One list: adding a law to models/wall/ adds it to the deck.
+  std::string expected = "one of: ";
+  const auto names = models::wall::wall_law_registry().names();
+  for (std::size_t i = 0; i < names.size(); ++i) expected += (i ? ", " : "") + names[i];
+  int found = 0;
+  for (const auto& k : deck::boundary_section().keys) {
+    if (k.info.name != "solids_wall") continue;
+    EXPECT_EQ(k.info.range, expected);
+    ++found;
+  }
+  EXPECT_EQ(found, 1);
+  EXPECT_EQ(names.size(), 4u);
+}
+
+TEST(DeckLoad, LeftOutTablesAreDefaultConstructed) {
+  const auto d = deck::load_deck_text(deck_text(), "deck.toml");
+  EXPECT_EQ(deck::show_section(deck::numerics_section(), d.numerics),
+            deck::show_section(deck::numerics_section(), deck::Numerics{}));
+  EXPECT_EQ(deck::show_section(deck::gas_section(), d.gas),
+            deck::show_section(deck::gas_section(), deck::Gas{}));
+  EXPECT_EQ(deck::show_section(deck::solids_section(), d.solids.material),
+            deck::show_section(deck::solids_section(), models::Material{}));
+  EXPECT_EQ(d.models.drag.name, deck::Models{}.drag.name);
 }
 
 TEST(DeckLoad, SelectedModelGetsEveryDeclaredCoefficient) {

@@ -1,8 +1,11 @@
 // Radial distribution functions at contact, App. B Eqs. 11, 12, 31: closed forms, divergence
-// exponents, and Dual derivatives against finite differences.
+// exponents, Dual derivatives against finite differences, and the table the deck names them by.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "models/dual.hpp"
 #include "models/rdf/radial_distribution.hpp"
@@ -49,22 +52,50 @@ TEST(RadialDistribution, ChialvoSundaresanDivergesWithExponentMinusThreeHalves) 
 TEST(RadialDistribution, DualDerivativesMatchFiniteDifferences) {
   const double phi_c = 0.596;
   for (const double phi : {0.05, 0.3, 0.45, 0.52, 0.58, 0.59}) {
-    for (const auto kind :
-         {rdf::Kind::carnahan_starling, rdf::Kind::torquato, rdf::Kind::chialvo_sundaresan}) {
+    for (const auto& g0 : rdf::radial_distributions()) {
       const double h = 1e-7;
       const double fd =
-          (rdf::evaluate(kind, phi + h, phi_c) - rdf::evaluate(kind, phi - h, phi_c)) / (2 * h);
-      const double exact = rdf::evaluate(kind, Dual::variable(phi), phi_c).slope;
+          (rdf::evaluate(g0, phi + h, phi_c) - rdf::evaluate(g0, phi - h, phi_c)) / (2 * h);
+      const double exact = rdf::evaluate(g0, Dual::variable(phi), phi_c).slope;
       // Central difference with h = 1e-7: truncation ~h² g''' and rounding ~1e-16 g/h; 1e-6
       // relative covers both for these smooth functions away from φ_f.
-      EXPECT_NEAR(exact, fd, 1e-6 * std::abs(fd)) << "φ = " << phi;
+      EXPECT_NEAR(exact, fd, 1e-6 * std::abs(fd)) << g0.name << " at φ = " << phi;
     }
   }
 }
 
-TEST(RadialDistribution, NamesRoundTripAndUnknownNamesAreRejected) {
-  for (const auto& name : rdf::kind_names()) EXPECT_NO_THROW(rdf::kind_from_name(name));
-  EXPECT_THROW(rdf::kind_from_name("lun"), std::invalid_argument);
+TEST(RadialDistribution, TableListsExactlyTheShippedFunctions) {
+  const std::vector<std::string> shipped{"carnahan-starling", "torquato", "mkt"};
+  EXPECT_EQ(rdf::radial_distribution_names(), shipped);
+  for (const auto& name : shipped) EXPECT_EQ(rdf::radial_distribution(name).name, name);
+}
+
+TEST(RadialDistribution, EachNameEvaluatesItsOwnFormula) {
+  // Above φ_f and below φ_c the three differ; each name must give its own closed form, in
+  // double and in Dual.
+  const double phi = 0.55, phi_c = 0.596;
+  const double expected[] = {rdf::carnahan_starling(phi), rdf::torquato(phi, phi_c),
+                             rdf::chialvo_sundaresan(phi, phi_c)};
+  const auto& table = rdf::radial_distributions();
+  ASSERT_EQ(table.size(), 3u);
+  for (std::size_t i = 0; i < table.size(); ++i) {
+    EXPECT_EQ(rdf::evaluate(table[i], phi, phi_c), expected[i]) << table[i].name;
+    EXPECT_EQ(rdf::evaluate(table[i], Dual::variable(phi), phi_c).value, expected[i])
+        << table[i].name;
+  }
+  EXPECT_NE(expected[0], expected[1]);
+  EXPECT_NE(expected[1], expected[2]);
+}
+
+TEST(RadialDistribution, UnknownNamesAreRejectedWithTheAlternatives) {
+  try {
+    rdf::radial_distribution("lun");
+    FAIL() << "expected an unknown-name error";
+  } catch (const std::invalid_argument& e) {
+    const std::string message = e.what();
+    for (const auto& name : rdf::radial_distribution_names())
+      EXPECT_NE(message.find(name), std::string::npos) << message;
+  }
 }
 
 }  // namespace bagnold::tests

@@ -1,12 +1,17 @@
 // Every registered stress model: the registry lists exactly what we ship, unknown names list
-// the alternatives, coefficient declarations are complete, and outputs are finite over the
-// whole state range the solver can visit.
+// the alternatives, coefficient declarations are complete, outputs are finite over the whole
+// state range the solver can visit, and the packing limit and wall g0 each model reports are
+// those the solver computed itself before the interface had them (solids_wall.cpp, issue 18).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
+#include <variant>
 #include <vector>
 
+#include "models/rdf/radial_distribution.hpp"
+#include "models/stress/friction_table.hpp"
 #include "models/stress/solids_stress.hpp"
 #include "tests/unit/models/probe.hpp"
 
@@ -94,6 +99,68 @@ TEST(SolidsStress, EveryModelIsFiniteOverTheWholeStateRange) {
         }
       }
   }
+}
+
+namespace {
+// What solver/simple/solids_wall.cpp computed from the deck before the interface had these
+// calls (solids_packing_limit and capped_carnahan_starling at dc6e78f), for the models to match
+// bit for bit.
+double packing_limit_by_coefficient_name(const models::Coefficients& resolved, double friction) {
+  const auto found = resolved.find("packed_gas_fraction");
+  if (found != resolved.end() && std::holds_alternative<double>(found->second))
+    return 1.0 - std::get<double>(found->second);
+  return models::chialvo2012::critical_fraction(friction);
+}
+double wall_g0_before(double fraction, double packing_limit) {
+  return models::rdf::carnahan_starling(
+      std::clamp(std::max(fraction, 0.0), 0.0, std::max(packing_limit - 0.01, 0.0)));
+}
+}  // namespace
+
+TEST(SolidsStress, PackingLimitIsWhatTheWallsLookedUpByName) {
+  for (const auto& entry : models::stress_registry().entries()) {
+    for (const models::Coefficients& given :
+         {models::Coefficients{}, entry.name == "plastic" || entry.name == "mfix-default"
+                                      ? models::Coefficients{{"packed_gas_fraction", 0.45}}
+                                      : models::Coefficients{}}) {
+      const auto model = make_model(entry.name, given);
+      const auto resolved = models::resolve(entry.coefficients, given);
+      for (const double friction : {0.0, 0.1, 0.2, 0.3, 0.5, 0.77, 1.0}) {
+        Material m;
+        m.friction = friction;
+        EXPECT_EQ(model->packing_limit(m), packing_limit_by_coefficient_name(resolved, friction))
+            << entry.name << " at μ = " << friction;
+      }
+    }
+  }
+  // Written out: 1 − ε_g* for the plastic closures, App. A Table I's φ_c(0.3) = 0.596 otherwise.
+  Material m;
+  m.friction = 0.3;
+  EXPECT_DOUBLE_EQ(make_model("plastic", {{"packed_gas_fraction", 0.45}})->packing_limit(m), 0.55);
+  EXPECT_DOUBLE_EQ(make_model("mfix-default")->packing_limit(m), 0.6);
+  for (const std::string name : {"skt", "mkt", "steady-shear", "steady-shear-cohesive"})
+    EXPECT_DOUBLE_EQ(make_model(name)->packing_limit(m), 0.596) << name;
+}
+
+TEST(SolidsStress, WallRadialDistributionIsCarnahanStarlingCappedBelowThePackingLimit) {
+  for (const auto& name : models::stress_registry().names()) {
+    const auto model = make_model(name);
+    for (const double friction : {0.1, 0.5}) {
+      Material m;
+      m.friction = friction;
+      const double limit = model->packing_limit(m);
+      for (const double phi : {-0.05, 0.0, 1e-8, 0.2, 0.45, limit - 0.02, limit - 0.01,
+                               limit - 0.005, limit, limit + 0.03, 1.0})
+        EXPECT_EQ(model->wall_radial_distribution(m, phi), wall_g0_before(phi, limit))
+            << name << " at φ = " << phi;
+    }
+  }
+  // Hand values: mfix-default's φ_max = 0.6 caps φ at 0.59, g0 = (1 − 0.295)/0.41³; below the
+  // cap, Carnahan–Starling itself, (1 − 0.15)/0.7³ at φ = 0.3; g0 = 1 for an empty cell.
+  const auto mfix = make_model("mfix-default");
+  EXPECT_NEAR(mfix->wall_radial_distribution(Material{}, 0.7), 0.705 / (0.41 * 0.41 * 0.41), 1e-12);
+  EXPECT_NEAR(mfix->wall_radial_distribution(Material{}, 0.3), 0.85 / (0.7 * 0.7 * 0.7), 1e-12);
+  EXPECT_EQ(mfix->wall_radial_distribution(Material{}, -0.1), 1.0);
 }
 
 TEST(SolidsStress, MismatchedArraysAreRejected) {

@@ -1,10 +1,14 @@
 // Cohesive steady-shear rheology (App. D Eqs. 7–19): the cohesive regime, App. D's own
-// non-cohesive limit, the μ interpolation of its Table I.
+// non-cohesive limit and how it relates to steady-shear, the μ interpolation of its Table I.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
+#include <vector>
 
+#include "models/stress/onset_smoothing.hpp"
 #include "models/stress/rheometer.hpp"
+#include "models/stress/steady_shear.hpp"
 #include "models/stress/steady_shear_cohesive.hpp"
 #include "tests/unit/models/probe.hpp"
 
@@ -81,6 +85,109 @@ TEST(SteadyShearCohesive, TableIIsInterpolatedInFrictionAndClampedToItsRange) {
   EXPECT_DOUBLE_EQ(mid.quasi_static_exponent, 0.5 * (1.00 + 0.92));
   const auto frictionless = models::steady_shear_cohesive::constants_at(0.0, {});
   EXPECT_DOUBLE_EQ(frictionless.critical_fraction, 0.614);  // clamped to μ = 0.1
+}
+
+namespace {
+// The rheometer states of the Bo* = 0 comparisons: φ from dilute to past φ_c (App. A's φ_c(μ) is
+// 0.613, 0.596, 0.587 at μ = 0.1, 0.3, 0.5; App. D's 0.614, 0.596, 0.587), γ̇ over eight decades.
+const double fractions[] = {0.01,  0.05,   0.1,   0.2,    0.3,   0.4,   0.5,    0.55,  0.58,
+                            0.586, 0.5869, 0.587, 0.5871, 0.59,  0.595, 0.5959, 0.596, 0.5961,
+                            0.597, 0.6,    0.612, 0.613,  0.614, 0.62,  0.65,   0.7};
+const double shear_rates[] = {1e-4, 1e-2, 1.0, 1e2, 1e4};
+
+// A model's stresses at one rheometer state, through evaluate_cells as the models evaluate.
+template <class PointFunction>
+PointStress at_state(PointFunction&& point, double phi, double shear_rate) {
+  std::vector<double> f{phi}, g{shear_rate}, t{0.0}, p(1), dp(1), mu(1), lambda(1), theta(1);
+  const models::SolidsState in{f, g, t};
+  models::SolidsStress out{p, dp, mu, lambda, theta};
+  models::evaluate_cells(in, out, point);
+  return {p[0], dp[0], mu[0], lambda[0], theta[0]};
+}
+}  // namespace
+
+TEST(SteadyShearCohesive, ItsNonRefitConstantsHaveTheSteadyShearDefaults) {
+  // Declared once (issue 18): the constants App. A and App. D share, and x_s.
+  const models::steady_shear::Constants a;
+  const models::steady_shear_cohesive::Constants d;
+  EXPECT_EQ(d.onset_smoothing, a.onset_smoothing);
+  EXPECT_EQ(d.onset_smoothing, models::default_onset_smoothing);
+  EXPECT_EQ(d.onset_smoothing, 1e-2);  // the value the decks and docs/models.md give
+  // The stress-ratio constants are one struct with one set of defaults (App. A Table II).
+  EXPECT_EQ(d.stress_ratio.transition_inertial_number, 0.32);
+  EXPECT_EQ(d.stress_ratio.transition_inertial_number, a.stress_ratio.transition_inertial_number);
+  EXPECT_EQ(d.stress_ratio.hard_rise, a.stress_ratio.hard_rise);
+  EXPECT_EQ(d.stress_ratio.soft_drop, a.stress_ratio.soft_drop);
+}
+
+TEST(SteadyShearCohesive, AtZeroBondNumberWithAppendixATablesIsSteadyShearExactly) {
+  // The cohesive model at Bo* = 0 differs from steady-shear by design in its tables only: App. D
+  // refits the non-cohesive part (φ_c, ε, χ, α_QS, α_int, η_s by μ; α_inert 0.015 against 0.021;
+  // model-notes.md). With App. A's values in their place — and every other constant, x_s
+  // included, the cohesive model's own defaults — the cohesive formulas must give steady-shear's
+  // stresses bit for bit at every rheometer state: each cohesive term is multiplied by Bo* = 0
+  // or taken only where Bo* > 0. Steady-shear with dilute_stress = "printed", since its dilute
+  // limit is not applied to the cohesive model (docs/models.md). λ_s is 0 in both.
+  const auto steady_shear = make_model("steady-shear", {{"dilute_stress", std::string("printed")}});
+  for (const double mu : {0.1, 0.3, 0.5}) {
+    const Material dry = powder(0.0, mu);
+    auto c = models::steady_shear_cohesive::constants_at(mu, {});
+    const auto a = models::steady_shear::constants_at(mu, {});
+    c.critical_fraction = a.critical_fraction;
+    c.quasi_static_exponent = a.quasi_static_exponent;
+    c.inertial_exponent = a.inertial_exponent;
+    c.quasi_static = a.quasi_static;
+    c.intermediate = a.intermediate;
+    c.yield_stress_ratio = a.yield_stress_ratio;
+    c.inertial = a.inertial;
+    ASSERT_GT(c.cohesive_1, 0.0);  // the cohesive constants are there, only Bo* is 0
+    ASSERT_GT(c.cohesive_2, 0.0);
+    ASSERT_GT(c.cohesive_stress_ratio, 0.0);
+    const models::ViscosityLimits limits;
+    const auto cohesive = [&](double phi, double rate, double) {
+      return blended::point_stress(phi, rate, dry, c, limits);
+    };
+    for (const double phi : fractions) {
+      for (const double rate : shear_rates) {
+        const PointStress expected = probe(*steady_shear, dry, phi, rate);
+        const PointStress got = at_state(cohesive, phi, rate);
+        const std::string where = "μ = " + std::to_string(mu) + ", φ = " + std::to_string(phi) +
+                                  ", γ̇ = " + std::to_string(rate);
+        EXPECT_EQ(got.pressure, expected.pressure) << where;
+        EXPECT_EQ(got.pressure_derivative, expected.pressure_derivative) << where;
+        EXPECT_EQ(got.shear_viscosity, expected.shear_viscosity) << where;
+        EXPECT_EQ(got.bulk_viscosity, expected.bulk_viscosity) << where;
+      }
+    }
+  }
+}
+
+TEST(SteadyShearCohesive, AtZeroBondNumberItIsTheBlendedRheologyWithAppendixDTableI) {
+  // The other half: the registered model adds nothing to the blended formulas with its table.
+  const auto model = make_model("steady-shear-cohesive");
+  for (const double mu : {0.1, 0.3, 0.5}) {
+    const Material dry = powder(0.0, mu);
+    const auto c = models::steady_shear_cohesive::constants_at(mu, {});
+    const models::ViscosityLimits limits;
+    const auto blended_d = [&](double phi, double rate, double) {
+      return blended::point_stress(phi, rate, dry, c, limits);
+    };
+    for (const double phi : fractions) {
+      for (const double rate : shear_rates) {
+        const PointStress expected = at_state(blended_d, phi, rate);
+        const PointStress got = probe(*model, dry, phi, rate);
+        EXPECT_EQ(got.pressure, expected.pressure) << "φ = " << phi << ", γ̇ = " << rate;
+        EXPECT_EQ(got.pressure_derivative, expected.pressure_derivative);
+        EXPECT_EQ(got.shear_viscosity, expected.shear_viscosity);
+        EXPECT_EQ(got.bulk_viscosity, expected.bulk_viscosity);
+      }
+    }
+  }
+  // And the two tables do differ: at μ = 0.3, φ = 0.55, γ̇ = 1/s the pressures differ by 6 %.
+  const Material dry = powder(0.0, 0.3);
+  const double d = probe(*model, dry, 0.55, 1.0).pressure;
+  const double a = probe(*make_model("steady-shear"), dry, 0.55, 1.0).pressure;
+  EXPECT_GT(std::abs(d - a), 0.05 * a);
 }
 
 TEST(SteadyShearCohesive, PressureDerivativeMatchesFiniteDifferences) {

@@ -12,8 +12,7 @@ FlowSolver::FlowSolver(const deck::Deck& deck, const parallel::Domain& domain)
     : m_discretization(domain),
       m_settings(deck, domain),
       m_closures(deck, m_discretization),
-      m_predictor(deck, m_discretization, m_settings,
-                  m_closures.stress() && m_closures.stress()->defines_temperature()),
+      m_predictor(deck, m_discretization, m_settings, m_closures.stress()),
       m_fields(static_cast<std::size_t>(domain.layout.local_count())) {
   if (m_settings.moves[gas])
     m_pressure = std::make_unique<PressureCorrection>(deck, m_discretization, m_settings);

@@ -32,7 +32,8 @@ double correction_diagonal(double relaxed, double neighbours, bool simplec) {
 }  // namespace
 
 MomentumPredictor::MomentumPredictor(const deck::Deck& deck, const Discretization& discretization,
-                                     const SolverSettings& settings, bool has_temperature)
+                                     const SolverSettings& settings,
+                                     const models::SolidsStressModel* closure)
     : m_discretization(discretization), m_settings(settings) {
   const MPI_Comm comm = discretization.layout().comm().get();
   KrylovSettings krylov;
@@ -49,8 +50,8 @@ MomentumPredictor::MomentumPredictor(const deck::Deck& deck, const Discretizatio
         m_systems[phase][static_cast<std::size_t>(d)] = std::make_unique<LinearSystem>(
             comm, pattern, n.first_row, prefixes[phase][d], krylov);
   }
-  if (settings.moves[solids])
-    m_walls = std::make_unique<SolidsWallCoefficients>(deck, discretization, has_temperature);
+  if (settings.moves[solids] && closure)
+    m_walls = std::make_unique<SolidsWallCoefficients>(deck, discretization, *closure);
 }
 
 bool MomentumPredictor::predict(int d, const Inputs& in, run::FlowState& state,

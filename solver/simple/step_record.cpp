@@ -29,8 +29,10 @@ double Residuals::largest() const { return value[static_cast<std::size_t>(worst(
 
 int Residuals::worst() const {
   int worst = 0;
-  for (int e = 1; e < equation_count; ++e)
+  for (int e = 1; e < equation_count; ++e) {
+    if (std::isnan(value[static_cast<std::size_t>(worst)])) break;  // NaN stays the worst
     if (!(value[static_cast<std::size_t>(e)] <= value[static_cast<std::size_t>(worst)])) worst = e;
+  }
   return worst;
 }
 

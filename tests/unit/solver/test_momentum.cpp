@@ -33,7 +33,7 @@ struct Momentum {
         fields(static_cast<std::size_t>(c.local_count())),
         carried(static_cast<std::size_t>(c.local_count())),
         response(static_cast<std::size_t>(c.local_count())),
-        predictor(c.deck, c.disc, c.settings, false) {}
+        predictor(c.deck, c.disc, c.settings, closures.stress()) {}
 
   // Closures and carried fractions on the current state (as FlowSolver::iterate starts).
   void prepare() {

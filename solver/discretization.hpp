@@ -78,6 +78,11 @@ struct CellFace {
   int neighbour;  // local index across it (-1: not stored)
   int owner;      // the cell whose velocity component d sits on this face
   double area;    // [m²]
+  // The value on this face of a staggered field (one vector per direction, indexed by owner).
+  template <class Field>
+  auto of(const Field& face_field) const {
+    return face_field[static_cast<std::size_t>(direction)][static_cast<std::size_t>(owner)];
+  }
 };
 
 // Calls visit(const CellFace&) for each face of local cell l whose velocity is stored.

@@ -52,17 +52,14 @@ bool PressureCorrection::correct(const CorrectionResponse& response, const Carri
     double values[7];
     int count = 0;
     for_each_cell_face(disc, l, [&](const CellFace& f) {
-      const auto ud = static_cast<std::size_t>(f.direction);
-      const auto uo = static_cast<std::size_t>(f.owner);
-      const double eps_g = carried(gas, f.direction)[uo];
-      const double eps_s = carried(solids, f.direction)[uo];
-      const double flux_out = f.sign * f.area * (eps_g * state.gas_velocity[ud][uo] +
-                                                 eps_s * state.solids_velocity[ud][uo]);
+      const double eps_g = f.of(carried.value[gas]), eps_s = f.of(carried.value[solids]);
+      const double flux_out = f.sign * f.area * (eps_g * f.of(state.gas_velocity) +
+                                                 eps_s * f.of(state.solids_velocity));
       b -= flux_out;
       throughput += 0.5 * std::abs(flux_out);
-      if (kind[ud][uo] != FaceClass::unknown) return;
-      const double coefficient = f.area * (eps_g * response.pressure[gas][ud][uo] +
-                                           eps_s * response.pressure[solids][ud][uo]);
+      if (f.of(kind) != FaceClass::unknown) return;
+      const double coefficient = f.area * (eps_g * f.of(response.pressure[gas]) +
+                                           eps_s * f.of(response.pressure[solids]));
       a_p += coefficient;
       if (layout.kind(f.neighbour) == grid::CellKind::fluid) {
         columns[count] = numbering.global[static_cast<std::size_t>(f.neighbour)];

@@ -61,18 +61,16 @@ bool VolumeFractionCorrection::correct(const run::FlowState& old, double dt,
     double values[7];
     int count = 0;
     for_each_cell_face(disc, l, [&](const CellFace& f) {
-      const auto ud = static_cast<std::size_t>(f.direction);
-      const auto uo = static_cast<std::size_t>(f.owner);
-      const double eps_up = carried(solids, f.direction)[uo];
-      const double u_out = f.sign * u[ud][uo];
+      const double eps_up = f.of(carried.value[solids]);
+      const double u_face = f.of(u), u_out = f.sign * u_face;
       b -= f.area * eps_up * u_out;
       throughput += 0.5 * std::abs(f.area * eps_up * u_out);
-      if (kind[ud][uo] != FaceClass::unknown) return;
+      if (f.of(kind) != FaceClass::unknown) return;
       // Upwind as carried_fraction decides: the owner when u >= 0.
-      const bool upwind_is_l = (u[ud][uo] >= 0.0) == (f.sign > 0);
+      const bool upwind_is_l = (u_face >= 0.0) == (f.sign > 0);
       const bool neighbour_free = layout.kind(f.neighbour) == grid::CellKind::fluid;  // boundary ε' = 0
       double off = 0.0;
-      const double diffusion = f.area * eps_up * e[ud][uo];
+      const double diffusion = f.area * eps_up * f.of(e);
       a_p += diffusion;
       off -= diffusion;
       if (upwind_is_l) a_p += f.area * std::abs(u_out);

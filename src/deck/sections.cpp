@@ -1,6 +1,7 @@
 #include "src/deck/sections.hpp"
 
 #include "models/wall/wall_law.hpp"
+#include "src/deck/choices.hpp"
 
 namespace bagnold::deck {
 
@@ -212,15 +213,15 @@ const Section<InitialRegion>& initial_section() {
 
 const Section<Numerics>& numerics_section() {
   static const Section<Numerics> s{"numerics", "Discretization and solver controls", {
-      key(&Numerics::algorithm, "algorithm").init().one_of({"simplec", "simple"})
+      key(&Numerics::algorithm, "algorithm").init().one_of(choice_names(coupling_choices))
           .doc("Pressure-velocity coupling: SIMPLEC (d = A/(a_P − Σa_nb)) or SIMPLE (use relax_pressure ~0.3)."),
       key(&Numerics::convection, "convection").init()
-          .one_of({"upwind", "superbee", "muscl", "van_leer", "minmod"})
+          .one_of(choice_names(limiter_choices))
           .doc("Convection scheme: first-order upwind, or a TVD limiter by deferred correction."),
       key(&Numerics::tolerance, "tolerance").unit("-").init().within(1e-12, 1.0)
           .doc("A step has converged when every normalized residual is below this."),
       key(&Numerics::residual_normalization, "residual_normalization").init()
-          .one_of({"velocity-scale", "deviation"})
+          .one_of(choice_names(residual_normalization_choices))
           .doc("Momentum residuals over Σ a_P U (U the largest velocity), or over "
                "Σ(|Lu − L1 ū| + |s − L1 ū|), the forces that do not cancel for a uniform field "
                "(OpenFOAM's): the latter lets no large viscosity hide an unbalanced force "

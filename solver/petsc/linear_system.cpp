@@ -51,7 +51,9 @@ void LinearSystem::set_row(std::int64_t row, const std::int64_t* columns, const 
   double* slots = m_values.data() + begin;
   bool set[8] = {false, false, false, false, false, false, false, false};
   for (int i = 0; i < count; ++i) {
-    std::size_t j = 0;
+    // Rows are usually given in the pattern's own order: look there first.
+    const auto at = static_cast<std::size_t>(i);
+    std::size_t j = at < width && pattern[at] == columns[i] ? at : 0;
     while (j < width && pattern[j] != columns[i]) ++j;
     if (j == width) throw std::logic_error("LinearSystem::set_row: an entry outside the sparsity pattern");
     slots[j] = set[j] ? slots[j] + values[i] : values[i];

@@ -54,7 +54,8 @@ void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d
     const double half_c = 0.5 * disc.width(l, d), half_n = 0.5 * disc.width(n, d);
     row.area = disc.face_area(l, d);
     row.volume = (half_c + half_n) * row.area;
-    row.fraction = face_fraction(disc, state, phase, l, d);
+    // The gas carries its face fraction (carried_fraction), already evaluated for this iterate.
+    row.fraction = phase == gas ? carried_d[static_cast<std::size_t>(l)] : face_fraction(disc, state, phase, l, d);
     if (phase == solids && !solids_present(disc, state, l, d)) {
       // Not solved (u_s = 0): the row keeps its pattern, with zero off-diagonal entries.
       for (int face = 0; face < 6; ++face) {

@@ -129,8 +129,12 @@ void exchange_halo(const Layout& layout, std::span<T> values) {
   if (static_cast<int>(values.size()) != layout.local_count())
     throw std::logic_error("exchange_halo: field size does not match the layout");
   const auto& peers = layout.halo().peers;
-  std::vector<std::vector<T>> send_buffers(peers.size());
-  std::vector<MPI_Request> requests;
+  // Kept between calls (one set per value type): an exchange in the outer iteration allocates
+  // nothing once the buffers have grown to the peers' sizes.
+  static thread_local std::vector<std::vector<T>> send_buffers;
+  static thread_local std::vector<MPI_Request> requests;
+  send_buffers.resize(peers.size());
+  requests.clear();
   requests.reserve(2 * peers.size());
   const MPI_Comm comm = layout.comm().get();
   constexpr int tag = 7401;
@@ -147,6 +151,7 @@ void exchange_halo(const Layout& layout, std::span<T> values) {
     const auto& peer = peers[p];
     if (peer.send.empty()) continue;
     auto& buffer = send_buffers[p];
+    buffer.clear();
     buffer.reserve(peer.send.size());
     for (const int l : peer.send) buffer.push_back(values[static_cast<std::size_t>(l)]);
     requests.emplace_back();

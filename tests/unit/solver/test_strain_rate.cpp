@@ -64,5 +64,30 @@ TEST(StrainRate, ExactNextToBlockedCells) {
                a);
 }
 
+// numerics.wall_shear_in_strain_rate: a plug u_x = U sliding over a flagged no-slip wall has the
+// wall's shear in the wall cells' γ̇ (the ghost value −u_c a width away, as MFIX's ghost cells):
+// γ̇ = (U − (−U)) / (2 w) = U/w in a cell with one wall along z, 0 inside; unflagged, 0 everywhere.
+TEST(StrainRate, FlaggedNoSlipWallPutsItsShearIntoTheWallCells) {
+  const auto deck = deck::load_deck_text(box_deck(3, 3, 4), "strain.toml", {});
+  const parallel::Domain domain(deck, parallel::Communicator());
+  const double a[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+  auto u = linear_field(domain, a);
+  const double speed = 0.2, width = 0.01;
+  for (auto& value : u[0]) value = speed;
+  const solver::Discretization discretization(domain);
+  const std::vector<bool> flagged(domain.regions.regions.size(), true);
+  std::vector<double> with_wall, without_wall, divergence;
+  solver::compute_strain_rate(discretization, u, with_wall, divergence, flagged);
+  solver::compute_strain_rate(discretization, u, without_wall, divergence);
+  for (int l = 0; l < domain.layout.owned_fluid_count(); ++l) {
+    const auto ijk = domain.layout.index3(l);
+    const bool z_wall = ijk[2] == 0 || ijk[2] == 3, y_wall = ijk[1] == 0 || ijk[1] == 2;
+    // One wall along z (and one along y at the y walls): each adds (U/w)² to 2 D:D.
+    const double expected = speed / width * std::sqrt((z_wall ? 1.0 : 0.0) + (y_wall ? 1.0 : 0.0));
+    EXPECT_NEAR(with_wall[static_cast<std::size_t>(l)], expected, 1e-9) << "cell " << l;
+    EXPECT_NEAR(without_wall[static_cast<std::size_t>(l)], 0.0, 1e-9) << "cell " << l;
+  }
+}
+
 }  // namespace
 }  // namespace bagnold::tests

@@ -34,7 +34,7 @@ struct Residuals {
 // Each numerical limiter that can change a value in an outer iteration, counted per cell (or
 // per iteration for the velocity scale) each time it acts. The monitor has a column for each.
 enum Intervention : int {
-  compression_damped,        // limit_compression halved a compressing ε' (cells)
+  compression_damped,        // CompressionLimit halved a compressing ε' (cells)
   fraction_clamped_at_zero,  // a correction would have made ε_s negative (cells)
   negative_stiffness,        // dP_s/dε_s < 0 kept explicit in e (unknown faces)
   velocity_scale_capped,     // the residual velocity scale held at 10× the step start's (iterations)

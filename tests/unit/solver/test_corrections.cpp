@@ -13,7 +13,7 @@
 #include "solver/simple/pressure_correction.hpp"
 #include "solver/simple/solids_conservation.hpp"
 #include "solver/simple/volume_fraction_correction.hpp"
-#include "tests/unit/solver/petsc_environment.hpp"
+#include "tests/support/petsc_environment.hpp"
 #include "tests/unit/solver/solver_case.hpp"
 
 namespace bagnold::tests {

@@ -7,7 +7,7 @@
 
 #include "solver/simple/flow_solver.hpp"
 #include "src/run/initial_state.hpp"
-#include "tests/unit/solver/petsc_environment.hpp"
+#include "tests/support/petsc_environment.hpp"
 #include "tests/unit/solver/solver_case.hpp"
 
 namespace bagnold::tests {

@@ -12,7 +12,7 @@
 #include "solver/simple/momentum_predictor.hpp"
 #include "solver/simple/momentum_rows.hpp"
 #include "src/run/initial_state.hpp"
-#include "tests/unit/solver/petsc_environment.hpp"
+#include "tests/support/petsc_environment.hpp"
 #include "tests/unit/solver/solver_case.hpp"
 
 namespace bagnold::tests {

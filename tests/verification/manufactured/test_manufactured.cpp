@@ -22,22 +22,10 @@
 #include "src/deck/load.hpp"
 #include "src/parallel/domain.hpp"
 #include "src/run/flow_state.hpp"
+#include "tests/support/petsc_environment.hpp"
 
 namespace bagnold::tests {
 namespace {
-
-// PETSc lives from before the first test to after the last, and is finalized before
-// MPI_Finalize (tests/support/mpi_main.cpp calls it after RUN_ALL_TESTS returns).
-class PetscEnvironment : public ::testing::Environment {
- public:
-  void SetUp() override { m_session = std::make_unique<solver::PetscSession>(nullptr, nullptr); }
-  void TearDown() override { m_session.reset(); }
-
- private:
-  std::unique_ptr<solver::PetscSession> m_session;
-};
-[[maybe_unused]] ::testing::Environment* const petsc_environment =
-    ::testing::AddGlobalTestEnvironment(new PetscEnvironment);
 
 constexpr double pi = 3.14159265358979323846;
 constexpr double length = 1.0;     // L [m]

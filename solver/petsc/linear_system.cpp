@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 namespace bagnold::solver {
 
@@ -20,11 +21,12 @@ void PetscSession::add_options(const std::string& options) {
   if (log_view) petsc_check(PetscLogDefaultBegin(), "PetscLogDefaultBegin");
 }
 
-LinearSystem::LinearSystem(MPI_Comm comm, const SparsityPattern& pattern, std::int64_t first_row,
+LinearSystem::LinearSystem(MPI_Comm comm, SparsityPattern pattern_in, std::int64_t first_row,
                            const std::string& prefix, const KrylovSettings& settings)
-    : m_comm(comm), m_rows(pattern.rows()), m_first_row(first_row), m_pattern(pattern),
-      m_values(pattern.columns.size(), 0.0), m_rhs_values(static_cast<std::size_t>(m_rows), 0.0),
+    : m_comm(comm), m_rows(pattern_in.rows()), m_first_row(first_row), m_pattern(std::move(pattern_in)),
+      m_values(m_pattern.columns.size(), 0.0), m_rhs_values(static_cast<std::size_t>(m_rows), 0.0),
       m_prefix(prefix), m_settings(settings) {
+  const SparsityPattern& pattern = m_pattern;
   const auto n = static_cast<PetscInt>(m_rows);
   petsc_check(MatCreate(comm, m_matrix.out()), "MatCreate");
   petsc_check(MatSetSizes(m_matrix.get(), n, n, PETSC_DETERMINE, PETSC_DETERMINE), "MatSetSizes");

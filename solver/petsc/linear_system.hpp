@@ -35,7 +35,7 @@ struct SolveReport {
 class LinearSystem {
  public:
   // `pattern`: the rows owned by this rank (contiguous global block starting at `first_row`).
-  LinearSystem(MPI_Comm comm, const SparsityPattern& pattern, std::int64_t first_row,
+  LinearSystem(MPI_Comm comm, SparsityPattern pattern, std::int64_t first_row,
                const std::string& prefix, const KrylovSettings& settings);
 
   // One row: global column indices within its pattern (duplicates are summed, in the order

@@ -44,6 +44,10 @@ inline std::string two_fluid(const std::string& stress = "plastic", bool with_ga
          "[models.drag]\nmodel = \"gidaspow\"\n"
          "[models.solids_stress]\nmodel = \"" + stress + "\"\n";
 }
+// Linear solves far below every tolerance a test asserts (a [numerics] table to append last).
+inline const std::string tight_linear_solves =
+    "[numerics]\npressure_tolerance = 1e-12\nmomentum_tolerance = 1e-12\n";
+
 inline std::string gas_only() { return "[gas]\ndensity = 1.2\nviscosity = 1.8e-5\n[solids]\nenabled = false\n"; }
 
 // Deck, domain, discretization, settings and a state (all fields per local cell).

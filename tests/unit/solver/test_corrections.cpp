@@ -24,7 +24,7 @@ using solver::petsc_check;
 using solver::gas;
 using solver::solids;
 
-const std::string tight = "[numerics]\npressure_tolerance = 1e-12\nmomentum_tolerance = 1e-12\n";
+const std::string& tight = tight_linear_solves;
 
 // A Case with the inputs the corrections take.
 struct Corrections {

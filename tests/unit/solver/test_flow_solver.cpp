@@ -15,7 +15,7 @@ namespace {
 
 using solver::petsc_check;
 
-const std::string tight = "[numerics]\npressure_tolerance = 1e-12\nmomentum_tolerance = 1e-12\n";
+const std::string& tight = tight_linear_solves;
 
 // The deck's initial state with its boundary values, as `bagnold run` starts.
 struct Stepper {

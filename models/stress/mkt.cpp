@@ -26,15 +26,26 @@ Real dense_to_dilute_chi(Real modified_inertial_number, double transition_inerti
   return rising / (three_halves_power(transition_inertial_number) + rising);
 }
 
-template <class Real>
-SteadyState<Real> steady_state(Real phi, const Material& material, const Constants& constants,
-                               const DenseLimit& dense) {
-  using std::pow;
-  using std::sqrt;
+MaterialTerms material_terms(const Material& material, const Constants& constants) {
   const double e = material.restitution;
   const double mu = material.friction;
-  const double critical = chialvo2012::critical_fraction(mu);
-  const double e_eff = effective_restitution(e, mu);
+  MaterialTerms t;
+  t.critical_fraction = chialvo2012::critical_fraction(mu);
+  t.effective_restitution = effective_restitution(e, mu);
+  // Eq. 38 with K/K′ = (1 − e²)/(1 − e_eff²), which avoids 0/0 at e = 1.
+  t.k_over_k_prime = (1.0 - e * e) / (1.0 - t.effective_restitution * t.effective_restitution);
+  t.psi = friction_factor_psi(e, mu, constants.psi_exponent);
+  t.yield_stress_ratio = chialvo2012::yield_stress_ratio(mu);
+  return t;
+}
+
+template <class Real>
+SteadyState<Real> steady_state(Real phi, const Material& material, const MaterialTerms& terms,
+                               const Constants& constants, const DenseLimit& dense) {
+  using std::sqrt;
+  const double e = material.restitution;
+  const double critical = terms.critical_fraction;
+  const double e_eff = terms.effective_restitution;
   const Real phi_jammed = dense.capped(phi, critical);
 
   SteadyState<Real> s;
@@ -46,10 +57,7 @@ SteadyState<Real> steady_state(Real phi, const Material& material, const Constan
   s.dissipation_factor = garzo_dufty::dissipation_factor(phi, g0, e);
   // e_eff replaces e only in K (App. B Sec. IV.C.1; Fig. 6b shows H keeps e).
   s.friction_dissipation = garzo_dufty::dissipation_factor(phi, g0, e_eff);
-  // Eq. 38 with K/K′ = (1 − e²)/(1 − e_eff²), which avoids 0/0 at e = 1.
-  const double k_over_k_prime = (1.0 - e * e) / (1.0 - e_eff * e_eff);
-  const double psi = friction_factor_psi(e, mu, constants.psi_exponent);
-  s.beta = phi * psi * s.shear_factor * sqrt(k_over_k_prime / s.pressure_factor);
+  s.beta = phi * terms.psi * s.shear_factor * sqrt(terms.k_over_k_prime / s.pressure_factor);
   // Eq. 30: dilute and dense temperatures, the larger wins (Eq. 28).
   const Real dilute_temperature = s.shear_factor / s.friction_dissipation;
   const Real dense_temperature = constants.dense_temperature / sqrt(critical - phi_jammed);
@@ -68,7 +76,7 @@ SteadyState<Real> steady_state(Real phi, const Material& material, const Constan
   s.dissipation_correction = s.beta * sqrt(s.pressure_factor) * s.shear_correction /
                              (phi * s.friction_dissipation * s.temperature_factor);
   // Eqs. 43, 45: τ_s = η_s (1 − χ) p.
-  s.yield_ratio = chialvo2012::yield_stress_ratio(mu) * (1.0 - s.chi);
+  s.yield_ratio = terms.yield_stress_ratio * (1.0 - s.chi);
   // Table I: τ_inertial = β I′ p δ_τ (= B(α, β) I′ p, Eq. 46; not Eq. 48's τ_GD δ_τ).
   s.inertial_ratio = s.beta * s.inertial_number * s.shear_correction;
   return s;
@@ -76,9 +84,10 @@ SteadyState<Real> steady_state(Real phi, const Material& material, const Constan
 
 template double dense_to_dilute_chi(double, double);
 template Dual dense_to_dilute_chi(Dual, double);
-template SteadyState<double> steady_state(double, const Material&, const Constants&,
-                                          const DenseLimit&);
-template SteadyState<Dual> steady_state(Dual, const Material&, const Constants&, const DenseLimit&);
+template SteadyState<double> steady_state(double, const Material&, const MaterialTerms&,
+                                          const Constants&, const DenseLimit&);
+template SteadyState<Dual> steady_state(Dual, const Material&, const MaterialTerms&,
+                                        const Constants&, const DenseLimit&);
 
 Mkt::Mkt(const Constants& constants, const DenseLimit& dense, const DiluteLimit& dilute,
          const ViscosityLimits& limits)
@@ -88,12 +97,13 @@ void Mkt::evaluate(const Material& material, const SolidsState& in, SolidsStress
   require_valid_material(material, name());
   const double rho = material.density;
   const double d = material.diameter;
-  const double critical = chialvo2012::critical_fraction(material.friction);
-  const double yield_ratio = chialvo2012::yield_stress_ratio(material.friction);
+  const MaterialTerms terms = material_terms(material, m_constants);
+  const double critical = terms.critical_fraction;
+  const double yield_ratio = terms.yield_stress_ratio;
   evaluate_cells_dilute_limited(m_dilute, material, in, out,
                                 [&](double phi, double shear_rate, double) {
     PointStress p;
-    const auto s = steady_state(Dual::variable(phi), material, m_constants, m_dense);
+    const auto s = steady_state(Dual::variable(phi), material, terms, m_constants, m_dense);
     // Table I: p = ρ_s H T with T = M (γ̇d)².
     const auto k = kinetic_dense_pressure(phi, shear_rate, material, s.pressure_factor,
                                           s.temperature_factor, critical, m_dense);

@@ -62,9 +62,26 @@ struct SteadyState {
   Real inertial_ratio;          // τ_inertial/p = β I′ δ_τ, Table I
 };
 
+// What Table I needs that depends on the material alone: evaluated once per call of evaluate(),
+// not per cell.
+struct MaterialTerms {
+  double critical_fraction;      // φ_c(μ), App. A Table I
+  double effective_restitution;  // e_eff, Eqs. 22–23
+  double k_over_k_prime;         // K/K′ = (1 − e²)/(1 − e_eff²), Eq. 38
+  double psi;                    // ψ, Eq. 32
+  double yield_stress_ratio;     // η_s(μ), App. A Table II
+};
+MaterialTerms material_terms(const Material& material, const Constants& constants);
+
+template <class Real>
+SteadyState<Real> steady_state(Real phi, const Material& material, const MaterialTerms& terms,
+                               const Constants& constants, const DenseLimit& dense);
+// The same with the material terms evaluated for this call.
 template <class Real>
 SteadyState<Real> steady_state(Real phi, const Material& material, const Constants& constants,
-                               const DenseLimit& dense);
+                               const DenseLimit& dense) {
+  return steady_state(phi, material, material_terms(material, constants), constants, dense);
+}
 
 class Mkt final : public SolidsStressModel {
  public:

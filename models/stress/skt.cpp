@@ -12,9 +12,8 @@
 namespace bagnold::models::skt {
 
 template <class Real>
-KineticState<Real> kinetic_state(Real phi, const Material& material,
+KineticState<Real> kinetic_state(Real phi, const Material& material, double critical,
                                  const rdf::RadialDistribution& radial, const DenseLimit& dense) {
-  const double critical = chialvo2012::critical_fraction(material.friction);
   const double e = material.restitution;
   KineticState<Real> s;
   s.radial_distribution = rdf::evaluate(radial, dense.capped(phi, critical), critical);
@@ -28,10 +27,10 @@ KineticState<Real> kinetic_state(Real phi, const Material& material,
   return s;
 }
 
-template KineticState<double> kinetic_state(double, const Material&,
+template KineticState<double> kinetic_state(double, const Material&, double,
                                             const rdf::RadialDistribution&, const DenseLimit&);
-template KineticState<Dual> kinetic_state(Dual, const Material&, const rdf::RadialDistribution&,
-                                          const DenseLimit&);
+template KineticState<Dual> kinetic_state(Dual, const Material&, double,
+                                          const rdf::RadialDistribution&, const DenseLimit&);
 
 Skt::Skt(const rdf::RadialDistribution& radial, bool frictional_yield, const DenseLimit& dense,
          const DiluteLimit& dilute, const ViscosityLimits& limits)
@@ -51,7 +50,7 @@ void Skt::evaluate(const Material& material, const SolidsState& in, SolidsStress
   evaluate_cells_dilute_limited(m_dilute, material, in, out,
                                 [&](double phi, double shear_rate, double) {
     PointStress p;
-    const auto s = kinetic_state(Dual::variable(phi), material, *m_radial, m_dense);
+    const auto s = kinetic_state(Dual::variable(phi), material, critical, *m_radial, m_dense);
     // Eq. 1 with T = (J/K)(γ̇d)²: p = ρ_s H (J/K)(γ̇d)², differentiated at fixed γ̇.
     const auto k = kinetic_dense_pressure(phi, shear_rate, material, s.pressure_factor,
                                           s.temperature_factor, critical, m_dense);

@@ -30,8 +30,9 @@ struct KineticState {
   Real temperature_factor;   // T/(γ̇ d)² = J/K, Eq. 15
 };
 
+// critical: φ_c(μ) of the material (App. A Table I), where g0 is capped.
 template <class Real>
-KineticState<Real> kinetic_state(Real phi, const Material& material,
+KineticState<Real> kinetic_state(Real phi, const Material& material, double critical,
                                  const rdf::RadialDistribution& radial, const DenseLimit& dense);
 
 class Skt final : public SolidsStressModel {

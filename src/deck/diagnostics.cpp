@@ -5,7 +5,12 @@ namespace bagnold::deck {
 std::string Diagnostic::to_string() const {
   std::string out = file.empty() ? std::string("deck") : file;
   const bool from_command_line = file.rfind("--set", 0) == 0;
-  if (line > 0 && !from_command_line) out += ":" + std::to_string(line) + ":" + std::to_string(column);
+  if (line > 0 && !from_command_line) {
+    out += ':';
+    out += std::to_string(line);
+    out += ':';
+    out += std::to_string(column);
+  }
   out += ": ";
   if (!key.empty()) out += key + ": ";
   return out + message;

@@ -69,4 +69,17 @@ SparsityPattern Discretization::cell_pattern(Phase phase) const {
   return pattern;
 }
 
+void velocity_divergence(const Discretization& discretization,
+                         const std::array<std::vector<double>, 3>& velocity,
+                         std::vector<double>& divergence) {
+  const auto& layout = discretization.layout();
+  std::fill(divergence.begin(), divergence.end(), 0.0);
+  for (int l = 0; l < layout.owned_fluid_count(); ++l) {
+    double net = 0.0;
+    for_each_cell_face(discretization, l, [&](const CellFace& f) { net += f.sign * f.area * f.of(velocity); });
+    divergence[static_cast<std::size_t>(l)] = net / discretization.volume(l);
+  }
+  parallel::exchange_halo<double>(layout, divergence);
+}
+
 }  // namespace bagnold::solver

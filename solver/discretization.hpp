@@ -99,6 +99,12 @@ void for_each_cell_face(const Discretization& discretization, int l, Visit&& vis
   }
 }
 
+// ∇·u = Σ_faces sign · A · u_owner / V of a staggered velocity field, for the owned fluid cells
+// (the halo exchanged); 0 in every other cell. `divergence` has one value per local cell.
+void velocity_divergence(const Discretization& discretization,
+                         const std::array<std::vector<double>, 3>& velocity,
+                         std::vector<double>& divergence);
+
 // Component d of a staggered velocity field at the centre of local cell l (convention above).
 inline double centre_velocity(const parallel::Layout& layout, const std::vector<double>& u, int l, int d) {
   const int minus = layout.neighbour(l, 2 * d);

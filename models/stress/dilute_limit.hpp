@@ -66,7 +66,8 @@ double pressure_minimum_fraction(SlopeFunction&& pressure_slope, double lower, d
 // point does only outside the inertial regime.
 template <class PointFunction>
 void evaluate_cells_dilute_limited(const DiluteLimit& dilute, const Material& material,
-                                   const SolidsState& in, SolidsStress& out, PointFunction&& point) {
+                                   const SolidsState& in, SolidsStress& out, PointFunction&& point,
+                                   RateMeasure measure = RateMeasure::deviatoric) {
   const auto limited = [&](double phi, double shear_rate, double divergence) {
     if (phi < dilute.cutoff) {
       PointStress zero;
@@ -91,7 +92,7 @@ void evaluate_cells_dilute_limited(const DiluteLimit& dilute, const Material& ma
     dilute.minimum_for = material;
   }
   if (!dilute.ideal_gas) {
-    evaluate_cells(in, out, limited);
+    evaluate_cells(in, out, limited, measure);
     return;
   }
   const double minimum = dilute.minimum;
@@ -104,7 +105,7 @@ void evaluate_cells_dilute_limited(const DiluteLimit& dilute, const Material& ma
     s.shear_viscosity *= scale;
     s.bulk_viscosity *= scale;
     return s;
-  });
+  }, measure);
 }
 
 }  // namespace bagnold::models

@@ -1,7 +1,8 @@
 #pragma once
-// The array loop every stress model shares: it checks the spans, reduces the strain-rate
-// modulus to its deviatoric part and hands one cell at a time to the model's point function
-// (a non-virtual, inlinable callable), so the interface stays one virtual call per array.
+// The array loop every stress model shares: it checks the spans, takes the strain-rate modulus
+// the model is written in (its deviatoric part, or the whole) and hands one cell at a time to
+// the model's point function (a non-virtual, inlinable callable), so the interface stays one
+// virtual call per array.
 
 #include <cmath>
 #include <limits>
@@ -28,6 +29,12 @@ inline double deviatoric_shear_rate(double strain_rate, double divergence) {
   return squared > 0.0 ? std::sqrt(squared) : 0.0;
 }
 
+// Which modulus of D a model's shear rate is. In simple shear (tr D = 0) both are γ̇.
+enum class RateMeasure {
+  deviatoric,  // γ̇_s = sqrt(2 S:S): the kinetic theories, whose production is 2 μ_s S:S
+  whole,       // γ̇ = 2|D| = sqrt(2 D:D): App. A Eq. 14, with σ = p(I − η S/|D|) of Eq. 15
+};
+
 // Rejects material properties no closure can use (the deck range-checks them too; this guards
 // direct callers). Kinetic models need e < 1: their temperature scales as 1/(1 − e²).
 inline void require_valid_material(const Material& m, const std::string& model) {
@@ -40,10 +47,11 @@ inline void require_valid_material(const Material& m, const std::string& model) 
                                 "μ ≥ 0 and Bo* ≥ 0");
 }
 
-// point(φ, γ̇_s, tr D) -> PointStress for one cell; φ is clipped below at 0 (a solver iterate
-// may undershoot).
+// point(φ, rate, tr D) -> PointStress for one cell, rate as `measure` says; φ is clipped below
+// at 0 (a solver iterate may undershoot).
 template <class PointFunction>
-void evaluate_cells(const SolidsState& in, SolidsStress& out, PointFunction&& point) {
+void evaluate_cells(const SolidsState& in, SolidsStress& out, PointFunction&& point,
+                    RateMeasure measure = RateMeasure::deviatoric) {
   const std::size_t n = in.solids_fraction.size();
   if (in.strain_rate.size() != n || in.divergence.size() != n || out.pressure.size() != n ||
       out.pressure_derivative.size() != n || out.shear_viscosity.size() != n ||
@@ -52,8 +60,10 @@ void evaluate_cells(const SolidsState& in, SolidsStress& out, PointFunction&& po
   for (std::size_t i = 0; i < n; ++i) {
     const double phi = in.solids_fraction[i] > 0.0 ? in.solids_fraction[i] : 0.0;
     const double divergence = in.divergence[i];
-    const PointStress s =
-        point(phi, deviatoric_shear_rate(in.strain_rate[i], divergence), divergence);
+    const double rate = measure == RateMeasure::whole
+                            ? in.strain_rate[i]
+                            : deviatoric_shear_rate(in.strain_rate[i], divergence);
+    const PointStress s = point(phi, rate, divergence);
     out.pressure[i] = s.pressure;
     out.pressure_derivative[i] = s.pressure_derivative;
     out.shear_viscosity[i] = s.shear_viscosity;

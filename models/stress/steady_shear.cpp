@@ -37,7 +37,7 @@ void SteadyShear::evaluate(const Material& material, const SolidsState& in,
                                 [&](double phi, double shear_rate, double /*divergence*/) {
                                   return blended::point_stress(phi, shear_rate, non_cohesive, c,
                                                                m_limits);
-                                });
+                                }, RateMeasure::whole);
 }
 
 double SteadyShear::packing_limit(const Material& material) const { return chialvo2012::critical_fraction(material.friction); }

@@ -71,7 +71,7 @@ void SteadyShearCohesive::evaluate(const Material& material, const SolidsState& 
   const blended::Constants c = constants_at(material.friction, m_constants);
   evaluate_cells(in, out, [&](double phi, double shear_rate, double /*divergence*/) {
     return blended::point_stress(phi, shear_rate, material, c, m_limits);
-  });
+  }, RateMeasure::whole);
 }
 
 double SteadyShearCohesive::packing_limit(const Material& material) const { return chialvo2012::critical_fraction(material.friction); }

@@ -13,7 +13,9 @@ Closures::Closures(const deck::Deck& deck, const Discretization& discretization)
       m_drag_properties{deck.gas.density, deck.gas.viscosity, deck.solids.material.diameter,
                         deck.solids.material.density},
       m_gas_viscosity(deck.gas.viscosity),
-      m_relaxation_time(deck.numerics.pressure_shear_rate_relaxation_time) {
+      m_relaxation_time(deck.numerics.pressure_shear_rate_relaxation_time),
+      m_bulk_viscosity_ratio(deck.numerics.solids_bulk_viscosity_ratio),
+      m_gas_moves(deck.gas.enabled) {
   const auto& domain = discretization.domain();
   if (deck.solids.enabled && deck.gas.enabled)
     m_drag = models::drag_registry().create(deck.models.drag.name, deck.models.drag.coefficients);
@@ -25,7 +27,23 @@ Closures::Closures(const deck::Deck& deck, const Discretization& discretization)
         m_wall_shear_regions.push_back(domain.regions.types[r] == grid::BoundaryType::no_slip_wall &&
                                        domain.regions.regions[r].solids_wall == "no-slip");
   }
-  const auto local = static_cast<std::size_t>(discretization.layout().local_count());
+  // Outflow cells whose P_s is their fluid neighbour's (solids_pressure = "zero-gradient").
+  const auto& layout = discretization.layout();
+  for (int b = 0; b < layout.local_count(); ++b) {
+    if (layout.kind(b) != grid::CellKind::boundary) continue;
+    const auto r = static_cast<std::size_t>(layout.region(b));
+    if (domain.regions.types[r] != grid::BoundaryType::pressure_outflow ||
+        domain.regions.regions[r].solids_pressure != "zero-gradient")
+      continue;
+    for (int face = 0; face < 6; ++face) {
+      const int f = layout.neighbour(b, face);
+      if (f >= 0 && layout.kind(f) == grid::CellKind::fluid) {
+        m_outflow_copies.emplace_back(b, f);
+        break;
+      }
+    }
+  }
+  const auto local = static_cast<std::size_t>(layout.local_count());
   m_cells.reserve(local);
   for (auto* v : {&m_fraction, &m_rate, &m_pressure_rate, &m_divergence, &m_slip, &m_pressure,
                   &m_derivative, &m_shear, &m_bulk, &m_temperature, &m_unused[0], &m_unused[1],
@@ -68,10 +86,11 @@ void Closures::evaluate_solids_stress(const Discretization& discretization, run:
   const auto& layout = discretization.layout();
   for (int l = 0; l < layout.local_count(); ++l)
     fields.viscosity[gas][static_cast<std::size_t>(l)] = state.gas_fraction[static_cast<std::size_t>(l)] * m_gas_viscosity;
+  if (m_gas_moves) velocity_divergence(discretization, state.gas_velocity, fields.divergence[gas]);
   if (!m_stress) return;
 
   compute_strain_rate(discretization, state.solids_velocity, fields.strain_rate,
-                      fields.divergence, m_wall_shear_regions);
+                      fields.divergence[solids], m_wall_shear_regions);
   const double weight = m_relaxation_time > 0.0 ? dt / m_relaxation_time : 0.0;
   m_cells.clear();
   for (int l = 0; l < layout.local_count(); ++l) {
@@ -81,7 +100,7 @@ void Closures::evaluate_solids_stress(const Discretization& discretization, run:
     m_cells.push_back(l);
     m_fraction[k] = std::max(state.solids_fraction[i], 0.0);  // round-off below 0 at an emptying cell
     m_rate[k] = fields.strain_rate[i];
-    m_divergence[k] = fields.divergence[i];
+    m_divergence[k] = fields.divergence[solids][i];
     const double before = old.pressure_shear_rate[i];
     m_pressure_rate[k] = m_relaxation_time > 0.0 && std::isfinite(before)
                              ? (before + weight * fields.strain_rate[i]) / (1.0 + weight)
@@ -107,8 +126,10 @@ void Closures::evaluate_solids_stress(const Discretization& discretization, run:
     state.granular_temperature[i] = m_temperature[k];
     fields.pressure_derivative[i] = m_derivative[k];
     fields.viscosity[solids][i] = m_shear[k];
-    fields.bulk_viscosity[i] = m_bulk[k];
+    fields.bulk_viscosity[i] = m_bulk[k] + m_bulk_viscosity_ratio * m_shear[k];
   }
+  for (const auto& [outflow, fluid] : m_outflow_copies)
+    state.solids_pressure[static_cast<std::size_t>(outflow)] = state.solids_pressure[static_cast<std::size_t>(fluid)];
 }
 
 }  // namespace bagnold::solver

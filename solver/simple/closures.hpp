@@ -2,19 +2,24 @@
 // Step 0 of the outer iteration: the closures on the current iterate, at cell centres.
 //   β        the drag law (models/drag/) at ε_g and the slip speed |u_g − u_s| between the
 //            phases' centre velocities (centre_velocity, discretization.hpp);
-//   ε_g μ_g  the gas's effective viscosity;
+//   ε_g μ_g  the gas's effective viscosity, and ∇·u_g (velocity_divergence);
 //   P_s, dP_s/dε_s, μ_s, λ_s, Θ   the solids-stress model (models/stress/) at ε_s and the
-//            strain-rate invariants of the solids velocity (solver/strain_rate.hpp).
+//            strain-rate invariants of the solids velocity (solver/strain_rate.hpp); λ_s gains
+//            r μ_s with numerics.solids_bulk_viscosity_ratio r > 0.
 // Evaluated over every local fluid cell (the halo included, since the strain rate is
 // exchanged), so the momentum stencils need no further exchange.
 // With numerics.pressure_shear_rate_relaxation_time τ_P > 0, P_s and dP_s/dε_s come from a second
 // evaluation at γ̇_P, the strain rate relaxed in time: implicit Euler of dγ̇_P/dt = (γ̇ − γ̇_P)/τ_P
 // per cell, from the step's old γ̇_P (γ̇_P = γ̇ where old has none: a fresh start, or a restart
 // from a snapshot written before the field existed). μ_s and Θ keep the current rate.
-// P_s, γ̇_P and Θ go into the state (written to snapshots); the rest into ClosureFields.
+// P_s, γ̇_P and Θ go into the state (written to snapshots); the rest into ClosureFields. The
+// outflow cells of a pressure_outflow region with solids_pressure = "zero-gradient" take the P_s
+// of their fluid neighbour (MFIX's set_outflow), so the solids leave without a P_s drop across
+// the outlet face; with "zero" their P_s stays 0.
 
 #include <array>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "models/drag/drag_law.hpp"
@@ -49,6 +54,10 @@ class Closures {
   models::DragProperties m_drag_properties;
   double m_gas_viscosity;
   double m_relaxation_time;  // τ_P [s], 0: off
+  double m_bulk_viscosity_ratio;  // r of numerics.solids_bulk_viscosity_ratio: λ_s += r μ_s
+  bool m_gas_moves;
+  // (outflow cell, its fluid neighbour): P_s copied across a zero-gradient solids outlet.
+  std::vector<std::pair<int, int>> m_outflow_copies;
   std::unique_ptr<models::DragLaw> m_drag;              // null without both phases
   std::unique_ptr<models::SolidsStressModel> m_stress;  // null unless the solids move
   std::vector<bool> m_wall_shear_regions;  // per region: its wall shear enters γ̇ (empty: none)

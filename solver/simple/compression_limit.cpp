@@ -41,7 +41,7 @@ void CompressionLimit::apply(const run::FlowState& state, const ClosureFields& f
     const auto i = static_cast<std::size_t>(m_cells[k]);
     m_lambda[k] = 1.0;
     m_rate[k] = state.pressure_shear_rate[i];  // the rate P_s was evaluated at
-    m_divergence[k] = fields.divergence[i];
+    m_divergence[k] = fields.divergence[solids][i];
   }
   const auto& stress = *m_closures.stress();
   for (int halving = 0; halving < max_halvings; ++halving) {

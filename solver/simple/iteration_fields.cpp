@@ -9,7 +9,7 @@ ClosureFields::ClosureFields(std::size_t local_count)
       bulk_viscosity(local_count, 0.0),
       pressure_derivative(local_count, 0.0),
       strain_rate(local_count, 0.0),
-      divergence(local_count, 0.0) {}
+      divergence{std::vector<double>(local_count, 0.0), std::vector<double>(local_count, 0.0)} {}
 
 CarriedFractions::CarriedFractions(std::size_t local_count) {
   for (auto& phase : value)

@@ -13,10 +13,10 @@ struct ClosureFields {
   explicit ClosureFields(std::size_t local_count);
   std::vector<double> drag;                      // β [kg/(m³ s)]
   std::array<std::vector<double>, 2> viscosity;  // ε_g μ_g and μ_s [Pa s]
-  std::vector<double> bulk_viscosity;            // λ_s [Pa s] of the closure
+  std::vector<double> bulk_viscosity;            // λ_s [Pa s] of the closure (+ r μ_s)
   std::vector<double> pressure_derivative;       // dP_s/dε_s [Pa] at fixed strain rate
   std::vector<double> strain_rate;               // γ̇ = sqrt(2 D:D) of the solids [1/s]
-  std::vector<double> divergence;                // ∇·u_s [1/s]
+  std::array<std::vector<double>, 2> divergence;  // ∇·u_g, ∇·u_s [1/s] (0 beyond fluid cells)
 };
 
 // The fraction of each phase carried through each face (per phase, direction d, owning cell):

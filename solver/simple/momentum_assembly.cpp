@@ -1,23 +1,43 @@
 // Step 1a of the outer iteration: the momentum rows of one phase m (gas or solids) for the
 // velocity component d, before drag, relaxation and partial elimination (momentum_predictor.cpp).
 //
+// The stress is the full Newtonian-form tensor of each phase,
+//   σ_m = −P I + μ (∇u + ∇uᵀ) + (λ − ⅔ μ)(∇·u) I,
+// with μ = ε_g μ_g, λ = 0 for the gas and the closure's μ_s, λ_s for the solids (the gas's P is
+// its pressure, times ε_g; the solids' P_s). Its divergence for component d splits into
+//   ∂_e(μ ∂_e u_d)   for every e: implicit (the a_nb below), as for a Laplacian;
+//   ∂_d(μ ∂_d u_d)   the transpose's normal part: implicit too, by doubling D on the two faces
+//                    normal to d (so the normal viscous stress is 2 μ ∂_d u_d);
+//   ∂_e(μ ∂_d u_e)   e ≠ d, the transpose's cross part: explicit from the current iterate, at
+//                    the CV's edges, with the same edge viscosity as D (MFIX's calc_tau_u_s
+//                    does the same; it converges with the outer iteration);
+//   ∂_d((λ − ⅔ μ) ∇·u)  explicit from the cell centres' ∇·u (closures.hpp).
+// Face and edge viscosities are the harmonic means of the cells around them (MFIX's AVG_H,
+// nested over an edge's four cells), or arithmetic (numerics.viscosity_average).
+//
 // For each unknown face velocity u_P (control volume between the centres of its owning cell c
 // and c's + neighbour n), and each of its six faces:
 //   F   outward mass flux ρ_m ε_m u A through the face, from the current iterate: the mean of
 //       the continuity fluxes of the two cell faces it spans (ε_m carried: the gas's linear
 //       face value, the solids' upwind value: CarriedFractions);
-//   D   μ_eff A / δ, with δ the distance to the neighbour (half a cell to a wall), μ_eff the
-//       phase's effective viscosity (ε_g μ_g, or the closure's μ_s) averaged over the cells
-//       around the face; at a solids wall with a partial-slip law (boundary.solids_wall),
-//       c_w A instead, with c_w ≤ μ_s/δ from the wall law (solids_wall.hpp);
+//   D   μ A / δ, with δ the distance to the neighbour (half a cell to a wall), μ the cell's on a
+//       face normal to d (2 μ A/δ: the transpose's normal part) and the edge's (the mean of the
+//       four cells around it) on the others; at a solids wall with a partial-slip law
+//       (boundary.solids_wall), c_w A instead, with c_w ≤ μ_s/δ from the wall law
+//       (solids_wall.hpp);
 //   a_nb = D + max(−F, 0),  a_P += a_nb       (first-order upwind, implicit, non-conservative
 //       form: the continuity imbalance is subtracted, so a_P = Σ a_nb + transient and the
 //       rows stay diagonally dominant while ε_m is still changing within the step);
-//   b −= F (φ_f^TVD − φ_upwind)               (TVD by deferred correction).
-// Sources: ε_m (P_c − P_n) A; for the solids also (P_s,c − P_s,n) A (P_s = 0 beyond an outlet)
-// and, with numerics.solids_bulk_viscosity_ratio r > 0, (λ_n ∇·u_n − λ_c ∇·u_c) A, λ = r μ_s;
-// ε_m ρ_m g_d V; the implicit-Euler term ε_m ρ_m V / dt (u_P − u_P^old); the gas's optional
-// manufactured source.
+//   b −= F (φ_f^TVD − φ_upwind)               (TVD by deferred correction);
+//   b += s μ_edge (u_e,n − u_e,c) A/δ_d        (the cross part on a face normal to e ≠ d, s = ±1
+//       its side, u_e on the edge's two faces of c and n, δ_d the distance between their centres;
+//       zero on a wall, where u_e vanishes, at a partial-slip wall, whose law gives the whole wall
+//       stress, and at an opening).
+// Sources: ε_m (P_c − P_n) A; for the solids also (P_s,c − P_s,n) A (an outflow cell's P_s as
+// its region's solids_pressure says: its fluid neighbour's, or 0; closures.hpp);
+// ((λ − ⅔ μ)∇·u)_n − ((λ − ⅔ μ)∇·u)_c) A over the fluid cells (∇·u = 0 beyond them, as an
+// outlet's P_s); ε_m ρ_m g_d V; the implicit-Euler term ε_m ρ_m V / dt (u_P − u_P^old); the gas's
+// optional manufactured source.
 #include <algorithm>
 #include <cmath>
 
@@ -25,6 +45,15 @@
 #include "solver/simple/momentum_rows.hpp"
 
 namespace bagnold::solver {
+
+namespace {
+// The mean viscosity of two cells (MFIX's AVG_H when harmonic: 0 if both are 0).
+double mean_viscosity(deck::ViscosityAverage average, double a, double b) {
+  if (average == deck::ViscosityAverage::arithmetic) return 0.5 * (a + b);
+  const double sum = a + b;
+  return sum > 0.0 ? 2.0 * a * b / sum : 0.0;
+}
+}  // namespace
 
 void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d,
                             const run::FlowState& state, SolidsWallCoefficients* walls,
@@ -44,6 +73,8 @@ void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d
   const auto& carried_d = in.carried(phase, d);
   auto at = [&](int local) { return u[static_cast<std::size_t>(local)]; };
   auto viscosity = [&](int local) { return local >= 0 ? mu[static_cast<std::size_t>(local)] : 0.0; };
+  const deck::ViscosityAverage average = in.settings.viscosity_average;
+  auto mean = [average](double a, double b) { return mean_viscosity(average, a, b); };
 
   rows.resize(numbering.owned_locals.size());
   for (std::size_t r = 0; r < numbering.owned_locals.size(); ++r) {
@@ -83,7 +114,7 @@ void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d
         const double own = at(l) * carried_d[static_cast<std::size_t>(l)];
         const double far = has_far ? at(link.local) * carried_d[static_cast<std::size_t>(link.local)] : own;
         flux_out = s * rho * row.area * 0.5 * (own + far);
-        diffusion = has_far ? viscosity(centre) * row.area / disc.width(centre, d) : 0.0;
+        diffusion = has_far ? 2.0 * viscosity(centre) * row.area / disc.width(centre, d) : 0.0;
       } else {
         // The face between the owning cells' faces along e: half of c's and half of n's.
         const int t = 3 - d - e;
@@ -102,15 +133,20 @@ void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d
                                            refresh_wall_coefficients) * area;
           } else {
             const double wall_distance = 0.5 * disc.width(l, e);
-            diffusion = 0.5 * (viscosity(l) + viscosity(n)) * area / wall_distance;
+            diffusion = mean(viscosity(l), viscosity(n)) * area / wall_distance;
           }
         } else if (link.kind != LinkKind::zero_gradient) {
           // The edge between c, n and their neighbours m, m' across the face.
           const int m = link.local;
           const int m_plus = layout.neighbour(m, 2 * d + 1);
-          const double edge_mu = 0.25 * (viscosity(l) + viscosity(n) + viscosity(m) +
-                                         (m_plus >= 0 ? viscosity(m_plus) : viscosity(m)));
+          const double edge_mu =
+              mean(mean(viscosity(l), viscosity(n)), m_plus >= 0 ? mean(viscosity(m), viscosity(m_plus)) : viscosity(m));
           diffusion = edge_mu * area / (0.5 * (disc.width(l, e) + disc.width(m, e)));
+          // The transpose's cross part μ ∂_d u_e on this face: ∂_d u_e from the e-faces of c
+          // and n on this side, δ_d = half_c + half_n apart (so A/δ_d = width along t).
+          const double uc_e = cv >= 0 ? v[static_cast<std::size_t>(cv)] : 0.0;
+          const double un_e = nv >= 0 ? v[static_cast<std::size_t>(nv)] : 0.0;
+          row.b += s * edge_mu * (un_e - uc_e) * disc.width(l, t);
         }
       }
       switch (link.kind) {
@@ -159,14 +195,16 @@ void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d
     const auto uc = static_cast<std::size_t>(l), un = static_cast<std::size_t>(n);
     if (phase == gas || in.settings.moves[gas])
       row.b += row.fraction * (state.gas_pressure[uc] - state.gas_pressure[un]) * row.area;
-    // P_s = 0 in a pressure-boundary cell: the solids leaving through an outlet are free of stress.
     if (phase == solids) row.b += (state.solids_pressure[uc] - state.solids_pressure[un]) * row.area;
-    // The optional bulk viscosity λ_s = r μ_s: σ gains −λ_s ∇·u I, lagged like P_s. It is zero
-    // beyond a fluid cell, as an outlet's P_s is: compute_strain_rate gives ∇·u = 0 there.
-    const double ratio = in.settings.bulk_viscosity_ratio;
-    const auto& divergence = in.closures.divergence;
-    if (phase == solids && ratio > 0.0)
-      row.b += ratio * (mu[un] * divergence[un] - mu[uc] * divergence[uc]) * row.area;
+    // The dilatational stress (λ − ⅔ μ) ∇·u, explicit like P_s, over the fluid cells only.
+    const auto& divergence = in.closures.divergence[phase];
+    auto dilatational = [&](int cell) {
+      if (layout.kind(cell) != grid::CellKind::fluid) return 0.0;
+      const auto i = static_cast<std::size_t>(cell);
+      const double lambda = phase == solids ? in.closures.bulk_viscosity[i] : 0.0;
+      return (lambda - (2.0 / 3.0) * mu[i]) * divergence[i];
+    };
+    row.b += (dilatational(n) - dilatational(l)) * row.area;
     row.b += row.fraction * rho * in.settings.gravity[ud] * row.volume;
     if (phase == gas && !in.gas_source[ud].empty()) row.b += in.gas_source[ud][uc] * row.volume;
     const double a_transient = row.fraction * rho * row.volume / in.dt;

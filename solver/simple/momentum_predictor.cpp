@@ -179,7 +179,7 @@ bool MomentumPredictor::predict(int d, const Inputs& in, run::FlowState& state,
     const double eps_s = moves[solids] ? rows[solids][r].fraction : 0.0;
     // K ≥ 0: a closure whose P_s falls with ε_s at fixed strain rate (kinetic theory in its
     // dilute range) would make the correction anti-diffusive; that part stays explicit
-    // (counted as negative_stiffness). At an outlet (P_s = 0 beyond it) the fluid cell's K alone.
+    // (counted as negative_stiffness). At an outlet the fluid cell's K alone (whatever the outflow cell's P_s, closures.hpp).
     const bool l_fluid = layout.kind(l) == grid::CellKind::fluid, n_fluid = layout.kind(n) == grid::CellKind::fluid;
     const double K_l = l_fluid ? stiffness[ul] : 0.0;
     const double K_n = n_fluid ? stiffness[static_cast<std::size_t>(n)] : 0.0;

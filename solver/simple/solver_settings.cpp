@@ -20,7 +20,9 @@ SolverSettings::SolverSettings(const deck::Deck& deck, const parallel::Domain& d
       limiter(limiter_from_name(deck.numerics.convection)),
       residual_normalization(residual_normalization_from_name(deck.numerics.residual_normalization)),
       net_force_residual(deck.numerics.net_force_residual),
-      bulk_viscosity_ratio(deck.numerics.solids_bulk_viscosity_ratio) {
+      bulk_viscosity_ratio(deck.numerics.solids_bulk_viscosity_ratio),
+      viscosity_average(deck::choice_value(deck::viscosity_average_choices,
+                                           deck.numerics.viscosity_average, "viscosity average")) {
   double extent = 0.0, g2 = 0.0;
   for (int d = 0; d < 3; ++d) {
     extent = std::max(extent, domain.grid.axis(d).faces().back() - domain.grid.axis(d).faces().front());

@@ -34,7 +34,8 @@ struct SolverSettings {
   Limiter limiter = Limiter::superbee;
   ResidualNormalization residual_normalization = ResidualNormalization::velocity_scale;
   bool net_force_residual = false;
-  double bulk_viscosity_ratio = 0.0;  // numerics.solids_bulk_viscosity_ratio: λ_s = r μ_s
+  double bulk_viscosity_ratio = 0.0;  // numerics.solids_bulk_viscosity_ratio: λ_s += r μ_s
+  deck::ViscosityAverage viscosity_average = deck::ViscosityAverage::arithmetic;
 };
 
 }  // namespace bagnold::solver

@@ -51,6 +51,12 @@ inline constexpr std::array<Choice<ResidualNormalization>, 2> residual_normaliza
     {{"velocity-scale", ResidualNormalization::velocity_scale},
      {"deviation", ResidualNormalization::deviation}}};
 
+// numerics.viscosity_average: how a face or edge viscosity is made from the cells around it
+// (solver/simple/momentum_assembly.cpp).
+enum class ViscosityAverage { arithmetic, harmonic };
+inline constexpr std::array<Choice<ViscosityAverage>, 2> viscosity_average_choices{
+    {{"arithmetic", ViscosityAverage::arithmetic}, {"harmonic", ViscosityAverage::harmonic}}};
+
 // numerics.algorithm: the pressure-velocity coupling (solver/simple/momentum_predictor.cpp).
 enum class Coupling { simplec, simple };
 inline constexpr std::array<Choice<Coupling>, 2> coupling_choices{

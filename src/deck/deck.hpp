@@ -66,6 +66,8 @@ struct BoundaryRegion {
   std::string face = "any";   // x- | x+ | y- | y+ | z- | z+ | internal | any
   std::array<double, 3> min{-1e30, -1e30, -1e30}, max{1e30, 1e30, 1e30};
   double pressure = 101325.0;                 // [Pa] pressure inflow/outflow
+  // pressure_outflow: P_s beyond the outlet, "zero" (stress-free) or "zero-gradient" (MFIX).
+  std::string solids_pressure = "zero-gradient";
   std::array<double, 3> wall_velocity{0, 0, 0};    // [m/s] moving wall
   std::array<double, 3> gas_velocity{0, 0, 0};     // [m/s] mass inflow
   std::array<double, 3> solids_velocity{0, 0, 0};  // [m/s] mass inflow
@@ -118,8 +120,9 @@ struct Numerics {
   int hard_outer_iterations = 0;         // above (if > 0): the next step shrinks
   double dt_growth = 1.2;                // factor after an easy step
   double relax_velocity = 0.7;           // α_u
-  bool wall_shear_in_strain_rate = false;  // no-slip walls' shear in the wall cells' γ̇
-  double solids_bulk_viscosity_ratio = 0.0;  // λ_s = r μ_s added to the solids stress
+  bool wall_shear_in_strain_rate = true;  // no-slip walls' shear in the wall cells' γ̇
+  std::string viscosity_average = "arithmetic";  // arithmetic | harmonic
+  double solids_bulk_viscosity_ratio = 0.0;  // r μ_s added to the closure's λ_s
   double pressure_shear_rate_relaxation_time = 0.0;  // τ_P [s]: P_s at γ̇ relaxed over τ_P
   double relax_pressure = 1.0;           // α_p (SIMPLE needs about 0.3)
   std::string pressure_preconditioner = "hypre";  // hypre | gamg

@@ -113,6 +113,12 @@ const Section<BoundaryRegion>& boundary_section() {
           .doc("Upper corner of the selecting box."),
       key(&BoundaryRegion::pressure, "pressure").unit("Pa").init().above(0.0)
           .doc("pressure_inflow / pressure_outflow: gas pressure outside."),
+      key(&BoundaryRegion::solids_pressure, "solids_pressure").init()
+          .one_of({"zero-gradient", "zero"})
+          .doc("pressure_outflow: the solids pressure P_s in the outflow cells: zero-gradient "
+               "(the adjacent fluid cell's, as MFIX's set_outflow copies P_s and P* into the "
+               "outflow cell; the solids leave without a P_s drop across the outlet face) or "
+               "zero (the outlet is stress-free for the solids: P_s falls to 0 across its face)."),
       key(&BoundaryRegion::wall_velocity, "wall_velocity").unit("m/s").init()
           .doc("moving_wall: velocity of the wall (its tangential part is used)."),
       key(&BoundaryRegion::gas_velocity, "gas_velocity").unit("m/s").init()
@@ -248,13 +254,20 @@ const Section<Numerics>& numerics_section() {
           .doc("Under-relaxation of the momentum equations, α_u."),
       key(&Numerics::wall_shear_in_strain_rate, "wall_shear_in_strain_rate").init()
           .doc("Whether a stationary no-slip solids wall's shear enters the closure's strain rate "
-               "in the cells beside it (ghost value −u_c, as MFIX), instead of one-sided interior "
-               "differences."),
+               "in the cells beside it (ghost value −u_c, as MFIX's ghost cells and the report's "
+               "OpenFOAM code do), instead of one-sided interior differences (false)."),
+      key(&Numerics::viscosity_average, "viscosity_average").init()
+          .one_of(choice_names(viscosity_average_choices))
+          .doc("How the viscosity on a control-volume edge is made from the four cells around it: "
+               "arithmetic (their mean; exact where μ varies linearly, as it falls to zero at a "
+               "free surface) or harmonic (2ab/(a + b), nested as MFIX's AVG_H; exact for "
+               "piecewise-constant layers). docs/solver.md gives the measurements behind the "
+               "default."),
       key(&Numerics::solids_bulk_viscosity_ratio, "solids_bulk_viscosity_ratio").unit("-").init()
           .within(0.0, 100.0)
-          .doc("r: the solids stress gains a bulk viscosity λ_s = r μ_s (σ = P_s I − 2 μ_s S − "
-               "λ_s ∇·u I), which dissipates the work a rate-dependent P_s does on expansion. 0: "
-               "none (the closures' own λ_s is not used)."),
+          .doc("r: a bulk viscosity r μ_s added to the closure's own λ_s (σ = −P_s I + 2 μ_s D + "
+               "(λ_s − ⅔ μ_s) ∇·u I), which dissipates the work a rate-dependent P_s does on "
+               "expansion. 0: the closure's λ_s alone."),
       key(&Numerics::pressure_shear_rate_relaxation_time, "pressure_shear_rate_relaxation_time")
           .unit("s").init().within(0.0, 1e3)
           .doc("τ_P: the closure's P_s and dP_s/dε_s are evaluated at a shear rate γ̇_P that "

@@ -21,8 +21,11 @@ constexpr double shear = 3.0;        // ∂u_s/∂z [1/s]
 constexpr double compression = 0.5;  // ∂w_s/∂z [1/s]
 
 // 3 × 3 × 4 (periodic in x, y; walls in z), stretched in z, with the closure `stress`.
+// The walls' shear stays out of γ̇ (numerics.wall_shear_in_strain_rate; test_strain_rate has it).
+// `numerics`: further lines of the [numerics] table.
 std::string column(const std::string& stress, const std::string& numerics = "") {
-  return unit_deck(3, 3, 4, "\"x\", \"y\"", -9.81, two_fluid(stress) + numerics);
+  return unit_deck(3, 3, 4, "\"x\", \"y\"", -9.81,
+                   two_fluid(stress) + "[numerics]\nwall_shear_in_strain_rate = false\n" + numerics);
 }
 
 // ε_s per layer: none in the bottom layer, then dilute to dense; u_s = (γ̇ z, 0, c z), u_g =
@@ -133,6 +136,7 @@ TEST(Closures, NoDragWithoutGas) {
 
 TEST(Closures, SolidsStressIsTheModelAtTheCellsFractionAndStrainRate) {
   // steady-shear: P_s depends on γ̇ as well as ε_s, so a wrong rate would show.
+  // Without the walls' shear in γ̇, so that every cell's rate is the linear field's.
   Case c(column("steady-shear"), {"grid.z.ratio=2.0"});
   fill(c);
   solver::Closures closures(c.deck, c.disc);
@@ -145,7 +149,7 @@ TEST(Closures, SolidsStressIsTheModelAtTheCellsFractionAndStrainRate) {
     const auto i = static_cast<std::size_t>(l);
     // Linear fields: the staggered strain rate and divergence are exact (test_strain_rate).
     EXPECT_NEAR(fields.strain_rate[i], expected_rate(), 1e-9);
-    EXPECT_NEAR(fields.divergence[i], compression, 1e-9);
+    EXPECT_NEAR(fields.divergence[solver::solids][i], compression, 1e-9);
     const auto expected = reference.at(c.state.solids_fraction[i], expected_rate(), compression);
     expect_close(c.state.solids_pressure[i], expected[0], "P_s", l);
     expect_close(fields.pressure_derivative[i], expected[1], "dP_s/deps_s", l);
@@ -160,7 +164,7 @@ TEST(Closures, SolidsStressIsTheModelAtTheCellsFractionAndStrainRate) {
 
 TEST(Closures, RelaxedPressureShearRateIsImplicitEuler) {
   const double tau = 0.1, dt = 0.02, before = 1.0;
-  Case c(column("steady-shear", "[numerics]\npressure_shear_rate_relaxation_time = 0.1\n"),
+  Case c(column("steady-shear", "pressure_shear_rate_relaxation_time = 0.1\n"),
          {"grid.z.ratio=2.0"});
   fill(c);
   // The step's start had γ̇_P = 1 /s in the upper half, none (NaN: a fresh start) below.
@@ -191,6 +195,30 @@ TEST(Closures, RelaxedPressureShearRateIsImplicitEuler) {
     }
   }
   EXPECT_GT(checked, 0);
+}
+
+// An outflow cell of a pressure_outflow region holds its fluid neighbour's P_s with
+// solids_pressure = "zero-gradient" (the default, MFIX's set_outflow) and 0 with "zero".
+TEST(Closures, OutflowCellsTakeTheirNeighboursSolidsPressureUnlessZero) {
+  for (const std::string treatment : {"zero-gradient", "zero"}) {
+    Case c(column("steady-shear", "[[boundary]]\nname = \"top\"\ntype = \"pressure_outflow\"\nface = \"z+\"\n"
+                                  "solids_pressure = \"" + treatment + "\"\n"));
+    fill(c);
+    solver::Closures closures(c.deck, c.disc);
+    solver::ClosureFields fields(static_cast<std::size_t>(c.local_count()));
+    closures.evaluate(c.disc, c.state, c.old, 1e-3, fields);
+    int outflow_cells = 0;
+    for (int l = 0; l < c.local_count(); ++l) {
+      if (c.layout().kind(l) != grid::CellKind::boundary || c.layout().index3(l)[2] != 4) continue;
+      const int below = c.layout().neighbour(l, parallel::bottom);
+      if (!c.fluid(below)) continue;
+      const double inside = c.state.solids_pressure[static_cast<std::size_t>(below)];
+      ASSERT_GT(inside, 0.0);
+      EXPECT_EQ(c.state.solids_pressure[static_cast<std::size_t>(l)], treatment == "zero" ? 0.0 : inside) << treatment;
+      ++outflow_cells;
+    }
+    EXPECT_GT(c.sum(outflow_cells), 0);
+  }
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "solver/simple/solids_wall.hpp"
 #include "solver/strain_rate.hpp"
 
 namespace bagnold::solver {
@@ -22,10 +23,13 @@ Closures::Closures(const deck::Deck& deck, const Discretization& discretization)
   if (deck.solids.enabled && deck.solids.momentum) {
     m_stress = models::stress_registry().create(deck.models.solids_stress.name,
                                                 deck.models.solids_stress.coefficients);
-    if (deck.numerics.wall_shear_in_strain_rate)
-      for (std::size_t r = 0; r < domain.regions.regions.size(); ++r)
+    // A stationary wall whose law does not let the solids slip puts its shear into γ̇.
+    if (deck.numerics.wall_shear_in_strain_rate) {
+      const auto laws = solids_wall_laws(deck, domain.regions, *m_stress);
+      for (std::size_t r = 0; r < laws.size(); ++r)
         m_wall_shear_regions.push_back(domain.regions.types[r] == grid::BoundaryType::no_slip_wall &&
-                                       domain.regions.regions[r].solids_wall == "no-slip");
+                                       !laws[r]->slips());
+    }
   }
   // Outflow cells whose P_s is their fluid neighbour's (solids_pressure = "zero-gradient").
   const auto& layout = discretization.layout();

@@ -6,24 +6,31 @@
 
 namespace bagnold::solver {
 
-SolidsWallCoefficients::SolidsWallCoefficients(const deck::Deck& deck,
-                                               const Discretization& discretization,
-                                               const models::SolidsStressModel& closure) {
-  const auto& regions = discretization.domain().regions;
+std::vector<std::unique_ptr<models::wall::WallLaw>> solids_wall_laws(
+    const deck::Deck& deck, const grid::BoundaryRegions& regions,
+    const models::SolidsStressModel& closure) {
   const auto at_wall = models::wall::closure_at_wall(closure, deck.solids.material);
-  bool any_partial = false;
+  std::vector<std::unique_ptr<models::wall::WallLaw>> laws;
   for (std::size_t r = 0; r < regions.regions.size(); ++r) {
     const auto& region = regions.regions[r];
     const bool wall = regions.types[r] == grid::BoundaryType::no_slip_wall ||
                       regions.types[r] == grid::BoundaryType::moving_wall;
-    m_laws.push_back(models::wall::wall_law_registry().create(
+    laws.push_back(models::wall::wall_law_registry().create(
         wall ? region.solids_wall : "no-slip",
         {.material = deck.solids.material,
          .wall = {.specularity = region.specularity, .wall_restitution = region.wall_restitution,
                   .wall_friction = region.wall_friction},
          .closure = at_wall}));
-    any_partial = any_partial || m_laws.back()->slips();
   }
+  return laws;
+}
+
+SolidsWallCoefficients::SolidsWallCoefficients(const deck::Deck& deck,
+                                               const Discretization& discretization,
+                                               const models::SolidsStressModel& closure)
+    : m_laws(solids_wall_laws(deck, discretization.domain().regions, closure)) {
+  bool any_partial = false;
+  for (const auto& law : m_laws) any_partial = any_partial || law->slips();
   if (any_partial)
     for (auto& held : m_held) held.assign(6 * static_cast<std::size_t>(discretization.layout().local_count()), 0.0);
 }

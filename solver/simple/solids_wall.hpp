@@ -23,6 +23,12 @@
 
 namespace bagnold::solver {
 
+// The solids' wall law of each boundary region, in region order: the region's solids_wall for
+// a wall (no_slip_wall, moving_wall), no-slip for any other region. `closure` must outlive them.
+std::vector<std::unique_ptr<models::wall::WallLaw>> solids_wall_laws(
+    const deck::Deck& deck, const grid::BoundaryRegions& regions,
+    const models::SolidsStressModel& closure);
+
 // The held c_w [Pa s/m] of every partial-slip solids wall face, per tangential component d and
 // slot 6 × local + face of the velocity's stencil.
 class SolidsWallCoefficients {

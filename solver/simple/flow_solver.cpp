@@ -85,6 +85,25 @@ std::vector<double> FlowSolver::stepped_solids_flux(const run::FlowState& state)
   return m_stepped_solids_flux.empty() ? boundary_mass_flux(state, solids) : m_stepped_solids_flux;
 }
 
+double FlowSolver::courant_number(const run::FlowState& state, double dt) const {
+  const auto& layout = m_discretization.layout();
+  double largest = 0.0;
+  for (const Phase phase : {gas, solids}) {
+    if (!m_settings.moves[phase]) continue;
+    const auto& velocity = phase == gas ? state.gas_velocity : state.solids_velocity;
+    for (int d = 0; d < 3; ++d) {
+      const auto& u = velocity[static_cast<std::size_t>(d)];
+      for (int l = 0; l < layout.owned_count(); ++l) {
+        const int n = layout.neighbour(l, 2 * d + 1);
+        if (n < 0 || (layout.kind(l) != grid::CellKind::fluid && layout.kind(n) != grid::CellKind::fluid)) continue;
+        const double distance = 0.5 * (m_discretization.width(l, d) + m_discretization.width(n, d));
+        largest = std::max(largest, std::abs(u[static_cast<std::size_t>(l)]) / distance);
+      }
+    }
+  }
+  return layout.comm().max(largest) * dt;
+}
+
 std::vector<double> FlowSolver::boundary_mass_flux(const run::FlowState& state, Phase phase) const {
   return solver::boundary_mass_flux(m_discretization, state, phase, m_settings.density[phase]);
 }

@@ -70,6 +70,9 @@ class FlowSolver {
   // ε_s at an outlet), so the monitor's outflow balances the inventory to round-off. Falls back
   // to boundary_mass_flux(state, solids) where the solids do not move.
   std::vector<double> stepped_solids_flux(const run::FlowState& state) const;
+  // max over both phases' stored face velocities of |u| dt/δ, δ the distance between the
+  // centres of the two cells the face lies between (collective).
+  double courant_number(const run::FlowState& state, double dt) const;
 
  private:
   // What the steps of an outer iteration hand each other.

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <fmt/format.h>
 
+#include "src/app/time_step_controller.hpp"
 #include "src/run/monitor_columns.hpp"
 #include "src/run/stop_request.hpp"
 
@@ -13,11 +14,13 @@ std::vector<std::string> monitor_columns(const parallel::Domain& domain) {
   auto columns = run::monitor_columns(domain.regions);
   for (int i = 0; i < solver::intervention_count; ++i) columns.push_back(solver::intervention_name(i));
   for (int k = 0; k < solver::linear_system_count; ++k) columns.push_back(solver::linear_system_name(k));
+  columns.push_back("courant");
   return columns;
 }
 
 std::vector<double> monitor_row(const TimeLoopContext& context, const FlowSolver& flow,
-                                const run::FlowState& state, double dt, const StepResult& step) {
+                                const run::FlowState& state, double dt, const StepResult& step,
+                                double courant) {
   const auto inventory = run::phase_inventory(context.deck, context.domain, state);
   std::vector<double> row = {dt, static_cast<double>(step.iterations), step.residuals.largest(),
                              inventory.gas, inventory.solids};
@@ -29,30 +32,24 @@ std::vector<double> monitor_row(const TimeLoopContext& context, const FlowSolver
   }
   row.insert(row.end(), step.interventions.begin(), step.interventions.end());
   row.insert(row.end(), step.linear_iterations.begin(), step.linear_iterations.end());
+  row.push_back(courant);
   return row;
 }
-
-namespace {
-// Hard steps (numerics.hard_outer_iterations) shrink dt down to this fraction of run.dt_max
-// (and never below run.dt_min).
-constexpr double hard_step_floor = 0.25;
-}  // namespace
 
 RunSummary run_time_loop(const TimeLoopContext& context, FlowSolver& flow, run::FlowState& state,
                          double start_time, long start_step, double dt_start) {
   const auto& run = context.deck.run;
-  const auto& numerics = context.deck.numerics;
   RunSummary summary;
   double time = start_time;
   long step = start_step;
-  double dt = dt_start;
+  TimeStepController controller(run, context.deck.numerics, dt_start);
   run::FlowState old = state;
   run::FlowState failed = state;  // the last iterate of a step that did not converge
   const double end = run.end_time;
   const double tiny = 1e-12 * std::max(1.0, end);
 
   while (time < end - tiny) {
-    double dt_try = std::min(dt, end - time);
+    double dt_try = std::min(controller.dt(), end - time);
     const double to_snapshot = context.output.next_snapshot_time() - time;
     if (to_snapshot > tiny && to_snapshot < dt_try) dt_try = to_snapshot;
     old = state;
@@ -62,7 +59,8 @@ RunSummary run_time_loop(const TimeLoopContext& context, FlowSolver& flow, run::
       failed = state;
       state = old;
       ++summary.redone_steps;
-      dt = 0.5 * dt_try;
+      controller.failed(dt_try);
+      const double dt = controller.dt();
       const std::string why =
           result.failure.empty()
               ? fmt::format("largest residual {:.3g} after {} outer iterations",
@@ -88,30 +86,15 @@ RunSummary run_time_loop(const TimeLoopContext& context, FlowSolver& flow, run::
     time += dt_try;
     ++step;
     summary.last_dt = dt_try;
-    context.monitor.append(time, monitor_row(context, flow, state, dt_try, result));
-    double next_dt = dt;
-    if (result.iterations <= numerics.easy_outer_iterations && dt_try >= dt * (1 - 1e-12) &&
-        dt < run.dt_max) {
-      next_dt = std::min(dt * numerics.dt_growth, run.dt_max);
-    } else if (numerics.hard_outer_iterations > 0 &&
-               result.iterations > numerics.hard_outer_iterations &&
-               dt / numerics.dt_growth >= std::max(hard_step_floor * run.dt_max, run.dt_min)) {
-      // The outer iterations per step grow faster than dt near the coupling's limit (the 2.5 mm
-      // bin: 5.75 at 1 ms, 16.3 at 1.53 ms), so a hard step is cheaper done as two easier ones.
-      // Not below dt_max/4: far below it a step is hard for other reasons (a bed compacting
-      // from rest takes 10-15 outer iterations at any dt) and shrinking only adds steps.
-      next_dt = dt / numerics.dt_growth;
-    }
-    if (next_dt != dt) {
-      context.log(fmt::format("t = {:.6g} s: converged in {} outer iterations; dt {:.3g} s -> {:.3g} s",
-                              time, result.iterations, dt, next_dt));
-      dt = next_dt;
-    }
+    const double courant = flow.courant_number(state, dt_try);
+    context.monitor.append(time, monitor_row(context, flow, state, dt_try, result, courant));
+    const std::string change = controller.converged(dt_try, result.iterations, courant, step);
+    if (!change.empty()) context.log(fmt::format("t = {:.6g} s: {}", time, change));
     // The snapshot records the next dt, so a restart continues exactly as this run would.
     const bool stop = run::stop_requested(context.domain.layout.comm());
     const bool finished = time >= end - tiny;  // the final state is always written
     if (context.output.snapshot_due(time) || stop || finished)
-      context.output.write(state, time, step, dt_try, dt);
+      context.output.write(state, time, step, dt_try, controller.dt());
     context.progress.update(time, dt_try, result.iterations);
     if (stop) {
       summary.interrupted = true;

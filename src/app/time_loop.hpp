@@ -2,11 +2,10 @@
 // The time loop of a run (the program's: solver/ advances one step): advance with an adaptive step from the current time to run.end_time,
 // append the monitor every step, write snapshots when due, show progress.
 //
-// Adaptive time step: a step that does not converge within numerics.max_outer_iterations (or
-// produces NaN, or has a linear solve that fails) is undone and redone with dt / 2; a step that converges within
-// numerics.easy_outer_iterations lets the next grow by numerics.dt_growth, up to run.dt_max;
-// one that needs more than numerics.hard_outer_iterations (if set) makes the next shrink by it,
-// down to run.dt_max / 4.
+// Adaptive time step (time_step_controller.hpp): a step that does not converge within
+// numerics.max_outer_iterations (or produces NaN, or has a linear solve that fails) is undone
+// and redone with dt / 2; converged steps grow or shrink dt by their outer iterations, their
+// recorded cost per simulated second and the Courant limit.
 // Steps are shortened to land exactly on snapshot times and on end_time, and the state at
 // end_time is always written. Every change of dt is logged. A step that fails at run.dt_min stops the run.
 
@@ -49,10 +48,12 @@ RunSummary run_time_loop(const TimeLoopContext& context, FlowSolver& flow, run::
                          double start_time, long start_step, double dt_start);
 
 // The monitor's columns: run::monitor_columns, then a count per numerical limiter and the linear
-// iterations per kind of system, each summed over the step's outer iterations.
+// iterations per kind of system, each summed over the step's outer iterations, then the step's
+// Courant number.
 std::vector<std::string> monitor_columns(const parallel::Domain& domain);
 // The monitor row after a step.
 std::vector<double> monitor_row(const TimeLoopContext& context, const FlowSolver& flow,
-                                const run::FlowState& state, double dt, const StepResult& step);
+                                const run::FlowState& state, double dt, const StepResult& step,
+                                double courant);
 
 }  // namespace bagnold::app

@@ -250,6 +250,12 @@ const Section<Numerics>& numerics_section() {
                "tolerance, shrinking only adds steps). Must exceed easy_outer_iterations."),
       key(&Numerics::dt_growth, "dt_growth").unit("-").init().within(1.0, 2.0)
           .doc("Factor by which dt grows after an easy step (up to run.dt_max)."),
+      key(&Numerics::max_courant, "max_courant").unit("-").init().within(1e-3, 100.0)
+          .doc("Largest Courant number |u| dt/δ of either phase's face velocities (δ the distance "
+               "between the cell centres the face lies between): the next dt is cut to keep it. "
+               "The implicit scheme stays stable above 1; the limit keeps a step from carrying "
+               "material across more than half a cell, which the outer iteration then "
+               "converges at a cost of accuracy. Monitor column `courant`."),
       key(&Numerics::relax_velocity, "relax_velocity").unit("-").init().within(0.05, 1.0)
           .doc("Under-relaxation of the momentum equations, α_u."),
       key(&Numerics::wall_shear_in_strain_rate, "wall_shear_in_strain_rate").init()

@@ -1,0 +1,82 @@
+#include "src/app/time_step_controller.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+
+namespace bagnold::app {
+
+namespace {
+// Hard steps (numerics.hard_outer_iterations) shrink dt down to this fraction of run.dt_max
+// (and never below run.dt_min): far below it a step is hard for other reasons (a bed
+// compacting from rest takes 10-15 outer iterations at any dt) and shrinking only adds steps.
+constexpr double hard_step_floor = 0.25;
+// How many steps a dt's recorded cost is trusted. Long enough to hold dt through a discharge's
+// slow change (the bin's 0.1 s at 1 ms steps), short enough that dt probes upwards again when
+// the flow has changed.
+constexpr long cost_memory_steps = 100;
+// Two dt values within this relative distance are the same level of the growth ladder.
+constexpr double same_level = 1e-9;
+}  // namespace
+
+TimeStepController::TimeStepController(const deck::RunControl& run, const deck::Numerics& numerics,
+                                       double dt)
+    : m_dt(dt),
+      m_dt_max(run.dt_max),
+      m_dt_min(run.dt_min),
+      m_growth(numerics.dt_growth),
+      m_max_courant(numerics.max_courant),
+      m_easy(numerics.easy_outer_iterations),
+      m_hard(numerics.hard_outer_iterations) {}
+
+const TimeStepController::Cost* TimeStepController::recorded(double dt, long step) const {
+  for (const auto& c : m_costs)
+    if (std::abs(c.dt - dt) <= same_level * dt && step - c.step <= cost_memory_steps) return &c;
+  return nullptr;
+}
+
+void TimeStepController::record(double dt, double per_second, long step) {
+  for (auto& c : m_costs)
+    if (std::abs(c.dt - dt) <= same_level * dt) {
+      c = {dt, per_second, step};
+      return;
+    }
+  m_costs.push_back({dt, per_second, step});
+}
+
+std::string TimeStepController::converged(double taken, int iterations, double courant, long step) {
+  const double dt = m_dt;
+  const bool full = taken >= dt * (1 - 1e-12);
+  const double cost = iterations / dt;
+  if (full) record(dt, cost, step);
+
+  double next = dt;
+  std::string why;
+  if (iterations <= m_easy && full && dt < m_dt_max) {
+    const double up = std::min(dt * m_growth, m_dt_max);
+    const Cost* above = recorded(up, step);
+    if (!above || above->per_second < cost) {
+      next = up;
+      why = fmt::format("converged in {} outer iterations", iterations);
+    }
+  } else if (m_hard > 0 && iterations > m_hard &&
+             dt / m_growth >= std::max(hard_step_floor * m_dt_max, m_dt_min)) {
+    // The outer iterations per step grow faster than dt near the coupling's limit (the 2.5 mm
+    // bin: 5.75 at 1 ms, 16.3 at 1.53 ms), so a hard step is cheaper done as two easier ones.
+    next = dt / m_growth;
+    why = fmt::format("converged in {} outer iterations", iterations);
+  }
+  // The Courant limit, on the step just taken scaled to the next dt.
+  if (courant > 0.0 && taken > 0.0) {
+    const double limit = taken * m_max_courant / courant;
+    if (next > limit) {
+      next = std::max(limit, m_dt_min);
+      why = fmt::format("Courant number {:.3g} (numerics.max_courant {:.3g})", courant, m_max_courant);
+    }
+  }
+  if (next == dt) return {};
+  m_dt = next;
+  return fmt::format("{}; dt {:.3g} s -> {:.3g} s", why, dt, next);
+}
+
+}  // namespace bagnold::app

@@ -1,0 +1,52 @@
+#pragma once
+// The adaptive time step of a run (time_loop.hpp calls it after every step).
+//
+//   - A step that fails is redone with dt / 2 (failed()).
+//   - After a converged step: it grows by numerics.dt_growth (up to run.dt_max) when it took at
+//     most numerics.easy_outer_iterations; it shrinks by dt_growth when it took more than
+//     numerics.hard_outer_iterations (if set), not below run.dt_max / 4.
+//   - Cost memory: each full step records its cost, outer iterations per simulated second, at
+//     its dt. A step does not grow into a dt whose recorded cost (within the last
+//     cost_memory_steps steps) is at least its own, so dt settles on the cheaper of two levels
+//     instead of cycling between an easy and a hard one (the 10 mm bin cycled between 0.892 and
+//     1.07 ms, 8 and 22 outer iterations, for the whole discharge). Older records are forgotten,
+//     so dt probes upwards again as the flow changes.
+//   - Courant limit: the next dt keeps the step's Courant number, max over both phases' face
+//     velocities of |u| dt/δ, at most numerics.max_courant.
+
+#include <string>
+#include <vector>
+
+#include "src/deck/deck.hpp"
+
+namespace bagnold::app {
+
+class TimeStepController {
+ public:
+  TimeStepController(const deck::RunControl& run, const deck::Numerics& numerics, double dt);
+
+  double dt() const { return m_dt; }
+
+  // A converged step of length `taken` (dt(), or less where it was shortened to land on a
+  // snapshot or the end), in `iterations` outer iterations, with Courant number `courant`.
+  // Returns why dt changed, or an empty string.
+  std::string converged(double taken, int iterations, double courant, long step);
+  // A step of length `taken` that did not converge: dt becomes taken / 2.
+  void failed(double taken) { m_dt = 0.5 * taken; }
+
+ private:
+  struct Cost {
+    double dt;             // [s]
+    double per_second;     // outer iterations per simulated second
+    long step;             // when it was measured
+  };
+  const Cost* recorded(double dt, long step) const;
+  void record(double dt, double per_second, long step);
+
+  double m_dt;
+  double m_dt_max, m_dt_min, m_growth, m_max_courant;
+  int m_easy, m_hard;
+  std::vector<Cost> m_costs;
+};
+
+}  // namespace bagnold::app

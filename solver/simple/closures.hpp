@@ -15,7 +15,7 @@
 // P_s, γ̇_P and Θ go into the state (written to snapshots); the rest into ClosureFields. The
 // outflow cells of a pressure_outflow region with solids_pressure = "zero-gradient" take the P_s
 // of their fluid neighbour (MFIX's set_outflow), so the solids leave without a P_s drop across
-// the outlet face; with "zero" their P_s stays 0.
+// the outlet face; with "zero" (the default) their P_s stays 0.
 
 #include <array>
 #include <memory>

@@ -67,7 +67,7 @@ struct BoundaryRegion {
   std::array<double, 3> min{-1e30, -1e30, -1e30}, max{1e30, 1e30, 1e30};
   double pressure = 101325.0;                 // [Pa] pressure inflow/outflow
   // pressure_outflow: P_s beyond the outlet, "zero" (stress-free) or "zero-gradient" (MFIX).
-  std::string solids_pressure = "zero-gradient";
+  std::string solids_pressure = "zero";
   std::array<double, 3> wall_velocity{0, 0, 0};    // [m/s] moving wall
   std::array<double, 3> gas_velocity{0, 0, 0};     // [m/s] mass inflow
   std::array<double, 3> solids_velocity{0, 0, 0};  // [m/s] mass inflow

@@ -114,11 +114,12 @@ const Section<BoundaryRegion>& boundary_section() {
       key(&BoundaryRegion::pressure, "pressure").unit("Pa").init().above(0.0)
           .doc("pressure_inflow / pressure_outflow: gas pressure outside."),
       key(&BoundaryRegion::solids_pressure, "solids_pressure").init()
-          .one_of({"zero-gradient", "zero"})
-          .doc("pressure_outflow: the solids pressure P_s in the outflow cells: zero-gradient "
-               "(the adjacent fluid cell's, as MFIX's set_outflow copies P_s and P* into the "
-               "outflow cell; the solids leave without a P_s drop across the outlet face) or "
-               "zero (the outlet is stress-free for the solids: P_s falls to 0 across its face)."),
+          .one_of({"zero", "zero-gradient"})
+          .doc("pressure_outflow: the solids pressure P_s in the outflow cells: zero (the outlet "
+               "is stress-free for the solids, as for material falling free below an orifice: "
+               "P_s falls to 0 across its face) or zero-gradient (the adjacent fluid cell's, as "
+               "MFIX's set_outflow copies P_s and P* into the outflow cell; with it the 5 mm bin "
+               "jams with the steady-shear rheology, cases/bin/README.md)."),
       key(&BoundaryRegion::wall_velocity, "wall_velocity").unit("m/s").init()
           .doc("moving_wall: velocity of the wall (its tangential part is used)."),
       key(&BoundaryRegion::gas_velocity, "gas_velocity").unit("m/s").init()

@@ -198,7 +198,7 @@ TEST(Closures, RelaxedPressureShearRateIsImplicitEuler) {
 }
 
 // An outflow cell of a pressure_outflow region holds its fluid neighbour's P_s with
-// solids_pressure = "zero-gradient" (the default, MFIX's set_outflow) and 0 with "zero".
+// solids_pressure = "zero-gradient" (MFIX's set_outflow) and 0 with "zero" (the default).
 TEST(Closures, OutflowCellsTakeTheirNeighboursSolidsPressureUnlessZero) {
   for (const std::string treatment : {"zero-gradient", "zero"}) {
     Case c(column("steady-shear", "[[boundary]]\nname = \"top\"\ntype = \"pressure_outflow\"\nface = \"z+\"\n"

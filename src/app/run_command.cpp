@@ -27,6 +27,7 @@ struct StartPoint {
   long step = 0;
   double dt = 0.0;       // the first step to try
   std::string snapshot;  // empty: a fresh start
+  std::vector<double> time_step_memory;  // the time-step controller's, from the snapshot
 };
 
 // Reads every field of the snapshot into `state` (any number of ranks); throws io::Hdf5Error
@@ -45,6 +46,7 @@ StartPoint restore_state(const std::string& file_or_directory, const parallel::D
   start.time = contents.info.time;
   start.step = contents.info.step;
   start.dt = contents.info.dt_next;
+  start.time_step_memory = contents.info.time_step_memory;
   return start;
 }
 
@@ -68,7 +70,7 @@ int run_command(const DeckArguments& args) {
                                static_cast<int>(run::FlowState::field_names().size())));
     run::FlowState state(domain.layout.local_count());
     run::set_initial_state(deck, domain, state);
-    StartPoint start{0.0, 0, deck.run.dt_initial, ""};
+    StartPoint start{0.0, 0, deck.run.dt_initial, "", {}};
     if (!args.restart.empty()) {
       try {
         start = restore_state(args.restart, domain, state);
@@ -109,7 +111,8 @@ int run_command(const DeckArguments& args) {
     const TimeLoopContext context{deck, domain, output, monitor, progress,
                                           [](const std::string& line) { say(line); }};
     const auto started = std::chrono::steady_clock::now();
-    const auto result = run_time_loop(context, flow, state, start.time, start.step, start.dt);
+    const auto result = run_time_loop(context, flow, state, start.time, start.step, start.dt,
+                                      start.time_step_memory);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     const double per_step = result.steps ? static_cast<double>(result.outer_iterations) /
                                                static_cast<double>(result.steps)

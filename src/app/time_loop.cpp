@@ -37,12 +37,14 @@ std::vector<double> monitor_row(const TimeLoopContext& context, const FlowSolver
 }
 
 RunSummary run_time_loop(const TimeLoopContext& context, FlowSolver& flow, run::FlowState& state,
-                         double start_time, long start_step, double dt_start) {
+                         double start_time, long start_step, double dt_start,
+                         const std::vector<double>& time_step_memory) {
   const auto& run = context.deck.run;
   RunSummary summary;
   double time = start_time;
   long step = start_step;
   TimeStepController controller(run, context.deck.numerics, dt_start);
+  controller.restore(time_step_memory);
   run::FlowState old = state;
   run::FlowState failed = state;  // the last iterate of a step that did not converge
   const double end = run.end_time;
@@ -94,7 +96,7 @@ RunSummary run_time_loop(const TimeLoopContext& context, FlowSolver& flow, run::
     const bool stop = run::stop_requested(context.domain.layout.comm());
     const bool finished = time >= end - tiny;  // the final state is always written
     if (context.output.snapshot_due(time) || stop || finished)
-      context.output.write(state, time, step, dt_try, controller.dt());
+      context.output.write(state, time, step, dt_try, controller.dt(), controller.memory());
     context.progress.update(time, dt_try, result.iterations);
     if (stop) {
       summary.interrupted = true;

@@ -44,8 +44,11 @@ struct TimeLoopContext {
 
 // From `start_time` (step number `start_step`) with a first step of `dt_start`. A SIGINT or
 // SIGTERM stops the loop after the current step with a final snapshot (summary.interrupted).
+// `time_step_memory`: the controller's state from the snapshot a restart starts from (empty on a
+// fresh start).
 RunSummary run_time_loop(const TimeLoopContext& context, FlowSolver& flow, run::FlowState& state,
-                         double start_time, long start_step, double dt_start);
+                         double start_time, long start_step, double dt_start,
+                         const std::vector<double>& time_step_memory = {});
 
 // The monitor's columns: run::monitor_columns, then a count per numerical limiter and the linear
 // iterations per kind of system, each summed over the step's outer iterations, then the step's

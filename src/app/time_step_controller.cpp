@@ -44,6 +44,18 @@ void TimeStepController::record(double dt, double per_second, long step) {
   m_costs.push_back({dt, per_second, step});
 }
 
+std::vector<double> TimeStepController::memory() const {
+  std::vector<double> out;
+  for (const auto& c : m_costs) out.insert(out.end(), {c.dt, c.per_second, static_cast<double>(c.step)});
+  return out;
+}
+
+void TimeStepController::restore(const std::vector<double>& memory) {
+  m_costs.clear();
+  for (std::size_t i = 0; i + 2 < memory.size(); i += 3)
+    m_costs.push_back({memory[i], memory[i + 1], static_cast<long>(memory[i + 2])});
+}
+
 std::string TimeStepController::converged(double taken, int iterations, double courant, long step) {
   const double dt = m_dt;
   const bool full = taken >= dt * (1 - 1e-12);

@@ -34,6 +34,11 @@ class TimeStepController {
   // A step of length `taken` that did not converge: dt becomes taken / 2.
   void failed(double taken) { m_dt = 0.5 * taken; }
 
+  // The recorded costs as (dt, per second, step) triples, for a snapshot, and back: a restart
+  // continues with the same memory, so it takes the same steps as the run it continues.
+  std::vector<double> memory() const;
+  void restore(const std::vector<double>& memory);
+
  private:
   struct Cost {
     double dt;             // [s]

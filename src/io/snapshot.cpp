@@ -47,6 +47,22 @@ void write_attribute(hid_t object, const char* name, const std::string& value) {
   check_status(H5Awrite(a.get(), type.get(), value.empty() ? " " : value.c_str()), "H5Awrite");
 }
 
+void write_attribute(hid_t object, const char* name, const std::vector<double>& values) {
+  const hsize_t n = values.size();
+  Dataspace space(check(H5Screate_simple(1, &n, nullptr), "H5Screate_simple"));
+  Attribute a(check(H5Acreate2(object, name, H5T_NATIVE_DOUBLE, space.get(), H5P_DEFAULT,
+                               H5P_DEFAULT), "H5Acreate"));
+  check_status(H5Awrite(a.get(), H5T_NATIVE_DOUBLE, values.data()), "H5Awrite");
+}
+
+std::vector<double> read_double_array_attribute(hid_t object, const char* name) {
+  Attribute a(check(H5Aopen(object, name, H5P_DEFAULT), name));
+  Dataspace space(check(H5Aget_space(a.get()), "H5Aget_space"));
+  std::vector<double> values(static_cast<std::size_t>(H5Sget_simple_extent_npoints(space.get())));
+  if (!values.empty()) check_status(H5Aread(a.get(), H5T_NATIVE_DOUBLE, values.data()), "H5Aread");
+  return values;
+}
+
 double read_double_attribute(hid_t object, const char* name) {
   Attribute a(check(H5Aopen(object, name, H5P_DEFAULT), name));
   double value = 0;
@@ -226,6 +242,8 @@ void write_snapshot(const std::string& path, const parallel::Layout& layout,
     write_attribute(file.get(), "step", info.step);
     write_attribute(file.get(), "dt", info.dt);
     write_attribute(file.get(), "dt_next", info.dt_next > 0 ? info.dt_next : info.dt);
+    if (!info.time_step_memory.empty())
+      write_attribute(file.get(), "time_step_memory", info.time_step_memory);
     write_attribute(file.get(), "format_version", static_cast<long>(format_version));
     write_attribute(file.get(), "bagnold_version", std::string(bagnold_version));
     write_attribute(file.get(), "title", info.title);
@@ -284,6 +302,8 @@ SnapshotContents read_snapshot(const std::string& path, const parallel::Layout& 
   contents.info.step = read_long_attribute(file.get(), "step");
   contents.info.dt_next = H5Aexists(file.get(), "dt_next") > 0
                               ? read_double_attribute(file.get(), "dt_next") : contents.info.dt;
+  if (H5Aexists(file.get(), "time_step_memory") > 0)
+    contents.info.time_step_memory = read_double_array_attribute(file.get(), "time_step_memory");
 
   // The grid must be the one this run uses, face by face.
   const char* face_names[] = {"grid/x_faces", "grid/y_faces", "grid/z_faces"};

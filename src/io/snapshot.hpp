@@ -38,6 +38,8 @@ struct SnapshotInfo {
   double dt = 0.0;       // [s] the last step
   std::string title;
   double dt_next = 0.0;  // [s] the step the time loop would take next (exact restart)
+  // The time-step controller's recorded costs (exact restart), attribute time_step_memory.
+  std::vector<double> time_step_memory;
 };
 
 struct SnapshotHeader {

@@ -24,7 +24,9 @@ class OutputWriter {
   double next_snapshot_time() const { return m_next_time; }
   bool snapshot_due(double time) const { return time >= m_next_time - 1e-12 * (1.0 + time); }
   // Collective: writes a snapshot of `state` and updates the index; returns its path.
-  std::string write(const FlowState& state, double time, long step, double dt, double dt_next = 0);
+  // `time_step_memory`: the time-step controller's state, for an exact restart.
+  std::string write(const FlowState& state, double time, long step, double dt, double dt_next = 0,
+                    const std::vector<double>& time_step_memory = {});
   // Collective: the state of a failed step, as diagnostic.h5 (not in the index); returns its path.
   std::string write_diagnostic(const FlowState& state, double time, long step, double dt);
   // For a restart at `time`: keeps the directory's snapshots up to that time in the index (later

@@ -40,7 +40,7 @@ struct Written {
     io::write_snapshot(path, layout, domain.flags,
                        {{"solids_fraction", io::Centering::cell, values},
                         {"solids_velocity_x", io::Centering::x_face, values}},
-                       {0.25, 12, 1e-3, "test"});
+                       {0.25, 12, 1e-3, "test", 2e-3, {1e-3, 8000.0, 11.0}});
   }
 };
 
@@ -89,6 +89,8 @@ TEST(Snapshot, ReadBackGivesEveryLocalCellIncludingHaloAndBoundary) {
       io::read_snapshot(path, w.domain.layout, {"solids_fraction", "solids_velocity_x"}, fields);
   EXPECT_EQ(contents.info.time, 0.25);
   EXPECT_EQ(contents.info.step, 12);
+  EXPECT_EQ(contents.info.dt_next, 2e-3);
+  EXPECT_EQ(contents.info.time_step_memory, (std::vector<double>{1e-3, 8000.0, 11.0}));
   ASSERT_EQ(fields.size(), 2u);
   for (int l = 0; l < w.domain.layout.local_count(); ++l) {
     EXPECT_EQ(fields[0][static_cast<std::size_t>(l)], w.values[static_cast<std::size_t>(l)]);

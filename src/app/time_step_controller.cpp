@@ -17,6 +17,10 @@ constexpr double hard_step_floor = 0.25;
 constexpr long cost_memory_steps = 100;
 // Two dt values within this relative distance are the same level of the growth ladder.
 constexpr double same_level = 1e-9;
+// A Courant-limited dt within this fraction of the current one keeps the current one (the
+// Courant number may then exceed numerics.max_courant by as much), so a slowly changing
+// velocity does not change dt, and log a line, at every step.
+constexpr double courant_dead_band = 0.02;
 }  // namespace
 
 TimeStepController::TimeStepController(const deck::RunControl& run, const deck::Numerics& numerics,
@@ -36,6 +40,9 @@ const TimeStepController::Cost* TimeStepController::recorded(double dt, long ste
 }
 
 void TimeStepController::record(double dt, double per_second, long step) {
+  // Records older than the memory are never read again: dropped, so the memory (written into
+  // every snapshot) stays small.
+  std::erase_if(m_costs, [&](const Cost& c) { return step - c.step > cost_memory_steps; });
   for (auto& c : m_costs)
     if (std::abs(c.dt - dt) <= same_level * dt) {
       c = {dt, per_second, step};
@@ -80,10 +87,11 @@ std::string TimeStepController::converged(double taken, int iterations, double c
   }
   // The Courant limit, on the step just taken scaled to the next dt.
   if (courant > 0.0 && taken > 0.0) {
-    const double limit = taken * m_max_courant / courant;
+    const double limit = std::max(taken * m_max_courant / courant, m_dt_min);
     if (next > limit) {
-      next = std::max(limit, m_dt_min);
-      why = fmt::format("Courant number {:.3g} (numerics.max_courant {:.3g})", courant, m_max_courant);
+      why = fmt::format("Courant number {:.3g} at dt {:.3g} s (numerics.max_courant {:.3g})",
+                        courant * next / taken, next, m_max_courant);
+      next = limit >= dt * (1 - courant_dead_band) && limit < dt ? dt : limit;
     }
   }
   if (next == dt) return {};

@@ -12,7 +12,8 @@
 //     1.07 ms, 8 and 22 outer iterations, for the whole discharge). Older records are forgotten,
 //     so dt probes upwards again as the flow changes.
 //   - Courant limit: the next dt keeps the step's Courant number, max over both phases' face
-//     velocities of |u| dt/δ, at most numerics.max_courant.
+//     velocities of |u| dt/δ, at most numerics.max_courant (within a 2 % dead band, so a
+//     slowly changing velocity does not change dt at every step).
 
 #include <string>
 #include <vector>

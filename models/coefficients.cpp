@@ -35,6 +35,11 @@ std::vector<CoefficientSpec> concatenate(
   return out;
 }
 
+CoefficientSpec required(CoefficientSpec spec) {
+  spec.required = true;
+  return spec;
+}
+
 Coefficients resolve(const std::vector<CoefficientSpec>& specs, const Coefficients& given) {
   Coefficients out;
   for (const auto& spec : specs) out[spec.name] = spec.default_value;
@@ -42,6 +47,9 @@ Coefficients resolve(const std::vector<CoefficientSpec>& specs, const Coefficien
     if (!out.contains(name)) throw std::invalid_argument("unknown coefficient '" + name + "'");
     out[name] = value;
   }
+  for (const auto& spec : specs)
+    if (spec.required && !given.contains(spec.name))
+      throw std::invalid_argument("coefficient '" + spec.name + "' has no default and must be given");
   return out;
 }
 

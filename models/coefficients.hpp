@@ -20,6 +20,7 @@ struct CoefficientSpec {
   double max = std::numeric_limits<double>::infinity();
   std::vector<std::string> choices;  // allowed values, for string options
   std::string doc;
+  bool required = false;  // no default: the deck must give it
 };
 
 // Builders for the two kinds of declaration (designated initializers of CoefficientSpec would
@@ -29,13 +30,17 @@ CoefficientSpec real_spec(std::string name, std::string unit, double default_val
 CoefficientSpec choice_spec(std::string name, std::string default_value,
                             std::vector<std::string> choices, std::string doc);
 
+// The same declaration without a default: a deck that selects the model must give the value.
+CoefficientSpec required(CoefficientSpec spec);
+
 // The declarations of several parts (a model's own, then shared groups), in order.
 std::vector<CoefficientSpec> concatenate(std::initializer_list<std::vector<CoefficientSpec>> parts);
 
 using CoefficientValue = std::variant<double, std::string>;
 using Coefficients = std::map<std::string, CoefficientValue>;
 
-// Defaults of every declared coefficient, overridden by the given values.
+// Defaults of every declared coefficient, overridden by the given values; std::invalid_argument
+// naming a required coefficient that is not given.
 Coefficients resolve(const std::vector<CoefficientSpec>& specs, const Coefficients& given);
 double real_coefficient(const Coefficients& c, const std::string& name);
 const std::string& string_coefficient(const Coefficients& c, const std::string& name);

@@ -104,7 +104,7 @@ Constants read_constants(const Coefficients& c) {
     {.name = "mfix-default",
      .summary = "MFIX default: Lun et al. kinetic theory, Schaeffer friction, plastic pressure",
      .coefficients = concatenate(
-         {PlasticPressure::specs(),
+         {PlasticPressure::specs(true),
           {real_spec("internal_friction_angle", "deg", Constants{}.internal_friction_angle, 0.0, 90.0,
                      "φ_f [deg] (MFIX PHI): Schaeffer's frictional viscosity P* sin φ_f/γ̇_s.")},
           DiluteLimit::specs(),

@@ -18,7 +18,8 @@ struct PlasticPressure {
   double exponent = 10.0;            // n [-]
 
   // The deck coefficients packed_gas_fraction, plastic_coefficient, plastic_exponent.
-  static std::vector<CoefficientSpec> specs();
+  // packed_gas_fraction_required: ε_g* has no default (mfix-default, as MFIX's EP_STAR).
+  static std::vector<CoefficientSpec> specs(bool packed_gas_fraction_required = false);
   static PlasticPressure read(const Coefficients& c);
 
   double packed_fraction() const { return 1.0 - packed_gas_fraction; }  // ε_s* [-]

@@ -182,7 +182,17 @@ void read_model_choice(const toml::table* table, const std::string& path,
                message + " (known: " + join(names) + ")");
     return;
   }
-  out.coefficients = models::resolve(registry.find(out.name).coefficients, out.coefficients);
+  bool complete = true;
+  for (const auto& spec : registry.find(out.name).coefficients)
+    if (spec.required && !out.coefficients.contains(spec.name)) {
+      const toml::node* node = table ? table->get("model") : nullptr;
+      diag.error(node ? node->source() : toml::source_region{}, path + "." + out.name + "." + spec.name,
+                 "missing key required by model = \"" + out.name + "\" (a real number [" + spec.unit +
+                     "] in [" + to_toml_text(spec.min) + ", " + to_toml_text(spec.max) +
+                     "]; it has no default)");
+      complete = false;
+    }
+  if (complete) out.coefficients = models::resolve(registry.find(out.name).coefficients, out.coefficients);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -601,7 +611,7 @@ std::vector<KeyInfo> coefficient_infos(const std::vector<models::CoefficientSpec
     k.doc = c.doc;
     if (std::holds_alternative<double>(c.default_value)) {
       k.type = "a real number";
-      k.default_text = to_toml_text(std::get<double>(c.default_value));
+      k.default_text = c.required ? "required" : to_toml_text(std::get<double>(c.default_value));
       k.range = "in [" + to_toml_text(c.min) + ", " + to_toml_text(c.max) + "]";
     } else {
       k.type = "a string";

@@ -54,9 +54,12 @@ inline double scaled_pressure_slope(const models::SolidsStressModel& model, cons
                        scaled_pressure(model, m, phi, to));
 }
 
+// The model with `given` coefficients; mfix-default's required ε_g* is 0.4 unless given.
 inline std::unique_ptr<models::SolidsStressModel> make_model(
     const std::string& name, const models::Coefficients& given = {}) {
-  return models::stress_registry().create(name, given);
+  models::Coefficients with = given;
+  if (name == "mfix-default" && !with.contains("packed_gas_fraction")) with["packed_gas_fraction"] = 0.4;
+  return models::stress_registry().create(name, with);
 }
 
 }  // namespace bagnold::tests

@@ -267,6 +267,19 @@ TEST(DeckErrors, UnknownKeyInANestedSection) {
   EXPECT_TRUE(contains(e.message, "did you mean 'ratio'?")) << e.message;
 }
 
+// mfix-default's ε_g* has no default (MFIX's EP_STAR has none): selecting the model without it
+// is an error at the model key's line that names the missing key; giving it is accepted.
+TEST(DeckErrors, MfixDefaultWithoutPackedGasFractionNamesTheKey) {
+  const std::string without = deck_text("[models.solids_stress]\nmodel = \"mfix-default\"\n");
+  const auto e = error_on(errors_of(without), "models.solids_stress.mfix-default.packed_gas_fraction");
+  EXPECT_EQ(e.line, line_of(without, "mfix-default"));
+  EXPECT_TRUE(contains(e.message, "missing key required by model")) << e.message;
+  const std::string with = deck_text(
+      "[models.solids_stress]\nmodel = \"mfix-default\"\n[models.solids_stress.mfix-default]\n"
+      "packed_gas_fraction = 0.42\n");
+  EXPECT_NO_THROW((void)deck::load_deck_text(with, "deck.toml", {}));
+}
+
 TEST(DeckErrors, UnknownKeyFarFromAnyGetsNoSuggestion) {
   const std::string text = deck_text("[gas]\nzzzzzzzzzz = 1.0\n");
   const auto e = error_on(errors_of(text), "gas.zzzzzzzzzz");

@@ -17,6 +17,7 @@
 #include "models/wall/johnson_jackson.hpp"
 #include "models/wall/wall_coefficient.hpp"
 #include "models/wall/wall_law.hpp"
+#include "tests/unit/models/probe.hpp"
 
 namespace bagnold::tests {
 namespace wall = models::wall;
@@ -81,7 +82,7 @@ TEST(WallLawRegistry, UnknownNameListsAlternatives) {
 
 TEST(WallLaw, ClosureAtWallIsWhatTheClosureReports) {
   for (const auto& name : models::stress_registry().names()) {
-    const auto model = models::stress_registry().create(name);
+    const auto model = make_model(name);
     const auto closure = wall::closure_at_wall(*model, beads());
     EXPECT_EQ(closure.defines_temperature, model->defines_temperature()) << name;
     EXPECT_EQ(closure.packing_limit, model->packing_limit(beads())) << name;

@@ -2,6 +2,7 @@
 
 #include <fstream>
 #include <set>
+#include <span>
 #include <sstream>
 
 #include "models/drag/drag_law.hpp"
@@ -383,6 +384,25 @@ void check_time_stepping(const toml::table& root, Deck& deck, Diagnostics& diag)
   }
 }
 
+// The selected closure's own limits on the material (the kinetic models need e < 1, ...): found
+// by evaluating it once, at ε_s = 0.3 and γ̇ = 1/s, so `check` refuses what `run` would.
+void check_closure_material(const toml::table* solids, const Deck& deck, Diagnostics& diag) {
+  if (!deck.solids.enabled || !deck.solids.momentum || !diag.ok()) return;
+  const auto& choice = deck.models.solids_stress;
+  try {
+    const auto model = models::stress_registry().create(choice.name, choice.coefficients);
+    const double phi = 0.3, rate = 1.0, divergence = 0.0;
+    double p = 0, dp = 0, mu = 0, lambda = 0, theta = 0;
+    models::SolidsStress out{std::span(&p, 1), std::span(&dp, 1), std::span(&mu, 1),
+                             std::span(&lambda, 1), std::span(&theta, 1)};
+    model->evaluate(deck.solids.material,
+                    {std::span(&phi, 1), std::span(&rate, 1), std::span(&divergence, 1)}, out);
+  } catch (const std::invalid_argument& e) {
+    diag.error(solids ? solids->source() : toml::source_region{}, "solids",
+               std::string(e.what()) + " (models.solids_stress.model = \"" + choice.name + "\")");
+  }
+}
+
 void read_material_and_models(const toml::table& root, Deck& deck, Diagnostics& diag) {
   const toml::table* solids = subtable(root, "solids", "solids", diag);
   read_section(solids, solids_section(), "solids", deck.solids.material, diag);
@@ -398,6 +418,7 @@ void read_material_and_models(const toml::table& root, Deck& deck, Diagnostics& 
       models_table ? subtable(*models_table, "drag", "models.drag", diag) : nullptr;
   read_model_choice(drag, "models.drag", drag_section(), models::drag_registry(),
                     deck.solids.enabled && deck.gas.enabled, deck.models.drag, diag);
+  check_closure_material(solids, deck, diag);
 }
 
 void read_all(const toml::table& root, Deck& deck, Diagnostics& diag) {

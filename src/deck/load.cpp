@@ -59,8 +59,15 @@ std::vector<PathPart> split_path(const std::string& path) {
   return parts;
 }
 
-// Applies "a.b.c=value": the value is read as TOML (1e-3, true, [0, 0, -9.81], "text"); a bare
-// word that is not TOML is taken as a string, so --set models.solids_stress.model=mkt works.
+std::string trimmed(const std::string& s) {
+  const auto first = s.find_first_not_of(" \t");
+  if (first == std::string::npos) return {};
+  return s.substr(first, s.find_last_not_of(" \t") - first + 1);
+}
+
+// Applies "a.b.c=value" (spaces around the key and the value are ignored, as in a deck line):
+// the value is read as TOML (1e-3, true, [0, 0, -9.81], "text"); a bare word that is not TOML
+// is taken as a string, so --set models.solids_stress.model=mkt works.
 void apply_override(toml::table& root, const std::string& assignment, Diagnostics& diag) {
   const auto equals = assignment.find('=');
   const std::string origin = "--set " + assignment;
@@ -68,8 +75,8 @@ void apply_override(toml::table& root, const std::string& assignment, Diagnostic
     diag.error(no_source(origin), "", "expected KEY=VALUE, e.g. --set solids.diameter=1e-3");
     return;
   }
-  const std::string path = assignment.substr(0, equals);
-  const std::string text = assignment.substr(equals + 1);
+  const std::string path = trimmed(assignment.substr(0, equals));
+  const std::string text = trimmed(assignment.substr(equals + 1));
   const auto parts = split_path(path);
   if (parts.empty()) {
     diag.error(no_source(origin), path, "not a valid key path (use dotted.names or name[index])");

@@ -41,6 +41,14 @@ TEST(DeckOverride, BareWordIsAString) {
   EXPECT_EQ(d.output.progress, "never");
 }
 
+// As a deck line: `--set 'solids.diameter = 1e-3'` is `--set solids.diameter=1e-3`.
+TEST(DeckOverride, SpacesAroundTheEqualsSignAreIgnored) {
+  const auto d = load_with({"solids.diameter = 2e-3", " run.end_time=0.5 ", "models.solids_stress.model =  skt"});
+  EXPECT_EQ(d.solids.material.diameter, 2e-3);
+  EXPECT_EQ(d.run.end_time, 0.5);
+  EXPECT_EQ(d.models.solids_stress.name, "skt");
+}
+
 TEST(DeckOverride, CreatesMissingTables) {
   // The deck has no [models] table: the override makes it, down to a model's coefficients.
   const auto d = load_with({"models.solids_stress.mkt.alpha_1=0.09"});

@@ -1,4 +1,5 @@
-// bagnold: the command-line program. Subcommands: run, check, rheometer, info, keys.
+// bagnold: the command-line program. Subcommands: run, check, rheometer, info, keys; and
+// `bagnold help [COMMAND]`, the same as --help.
 #include <CLI/CLI.hpp>
 
 #include "src/app/commands.hpp"
@@ -7,6 +8,7 @@
 #include "src/util/closest_match.hpp"
 
 #include <algorithm>
+#include <iostream>
 
 int main(int argc, char** argv) {
   using namespace bagnold::app;
@@ -47,6 +49,22 @@ int main(int argc, char** argv) {
       ->allow_extra_args(false);
   auto* keys = cli.add_subcommand("keys", "Print the deck key reference (Markdown, docs/deck.md)");
 
+  // `bagnold help [COMMAND]` prints what --help prints.
+  if (argc > 1 && std::string(argv[1]) == "help") {
+    const CLI::App* topic = &cli;
+    if (argc > 2) {
+      try {
+        topic = cli.get_subcommand(argv[2]);
+      } catch (const CLI::OptionNotFound&) {
+        say(std::string("bagnold help: unknown command '") + argv[2] + "'", true);
+        return bad_input;
+      }
+    }
+    int rank = 0;
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    if (rank == 0) std::cout << topic->help();
+    return success;
+  }
   // Name an unknown command (CLI11 would only say that a subcommand is required).
   if (argc > 1 && argv[1][0] != '-') {
     std::vector<std::string> known;

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <sstream>
 
 #include "src/util/closest_match.hpp"
 
@@ -22,6 +23,12 @@ std::string to_toml_text(double value) {
 }
 std::string to_toml_text(int value) { return std::to_string(value); }
 std::string to_toml_text(bool value) { return value ? "true" : "false"; }
+std::string node_text(const toml::node& node) {
+  std::ostringstream s;
+  node.visit([&](const auto& v) { s << v; });
+  return s.str();
+}
+
 std::string to_toml_text(const std::string& value) {
   std::string out = "\"";
   for (char c : value) {

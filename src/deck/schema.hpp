@@ -29,6 +29,8 @@
 namespace bagnold::deck {
 
 // Formatting of values as TOML text (for the resolved configuration and the docs).
+// A deck value as written (TOML), for messages that echo it.
+std::string node_text(const toml::node& node);
 std::string to_toml_text(double value);
 std::string to_toml_text(int value);
 std::string to_toml_text(bool value);
@@ -115,7 +117,7 @@ class Key {
                     const toml::node& node, T& t, const std::string& path, Diagnostics& diag) {
       V value{};
       if (!read_value(node, value)) {
-        diag.error(node.source(), path, "expected " + expected);
+        diag.error(node.source(), path, "expected " + expected + ", got " + node_text(node));
         return;
       }
       if (!in_range(value, lo, hi, lo_open, hi_open) || !is_choice(value, choices)) {

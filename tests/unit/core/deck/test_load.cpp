@@ -283,6 +283,14 @@ TEST(DeckErrors, MfixDefaultWithoutPackedGasFractionNamesTheKey) {
   EXPECT_NO_THROW((void)deck::load_deck_text(with, "deck.toml", {}));
 }
 
+// A value of the wrong type is echoed in the message, as the deck wrote it.
+TEST(DeckErrors, WrongTypeEchoesTheValue) {
+  const std::string text = deck_text("[solids]\ndiameter = \"big\"\n");
+  const auto e = error_on(errors_of(text), "solids.diameter");
+  EXPECT_TRUE(contains(e.message, "expected a real number")) << e.message;
+  EXPECT_TRUE(contains(e.message, "got 'big'")) << e.message;
+}
+
 TEST(DeckErrors, UnknownKeyFarFromAnyGetsNoSuggestion) {
   const std::string text = deck_text("[gas]\nzzzzzzzzzz = 1.0\n");
   const auto e = error_on(errors_of(text), "gas.zzzzzzzzzz");

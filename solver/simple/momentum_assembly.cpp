@@ -122,8 +122,11 @@ void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d
         const auto& carried_e = in.carried(phase, e);
         const int cv = s > 0 ? l : layout.neighbour(l, face);
         const int nv = s > 0 ? n : layout.neighbour(n, face);
-        const double vc = cv >= 0 ? v[static_cast<std::size_t>(cv)] * carried_e[static_cast<std::size_t>(cv)] : 0.0;
-        const double vn = nv >= 0 ? v[static_cast<std::size_t>(nv)] * carried_e[static_cast<std::size_t>(nv)] : 0.0;
+        // u_e on the e-faces of c and n on this side (0 where not stored), and their mass fluxes.
+        const double uc_e = cv >= 0 ? v[static_cast<std::size_t>(cv)] : 0.0;
+        const double un_e = nv >= 0 ? v[static_cast<std::size_t>(nv)] : 0.0;
+        const double vc = cv >= 0 ? uc_e * carried_e[static_cast<std::size_t>(cv)] : 0.0;
+        const double vn = nv >= 0 ? un_e * carried_e[static_cast<std::size_t>(nv)] : 0.0;
         flux_out = s * rho * (vc * half_c + vn * half_n) * disc.width(l, t);
         const double area = (half_c + half_n) * disc.width(l, t);
         if (link.kind == LinkKind::wall) {
@@ -142,10 +145,8 @@ void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d
           const double edge_mu =
               mean(mean(viscosity(l), viscosity(n)), m_plus >= 0 ? mean(viscosity(m), viscosity(m_plus)) : viscosity(m));
           diffusion = edge_mu * area / (0.5 * (disc.width(l, e) + disc.width(m, e)));
-          // The transpose's cross part μ ∂_d u_e on this face: ∂_d u_e from the e-faces of c
-          // and n on this side, δ_d = half_c + half_n apart (so A/δ_d = width along t).
-          const double uc_e = cv >= 0 ? v[static_cast<std::size_t>(cv)] : 0.0;
-          const double un_e = nv >= 0 ? v[static_cast<std::size_t>(nv)] : 0.0;
+          // The transpose's cross part μ ∂_d u_e on this face: ∂_d u_e from uc_e and un_e,
+          // δ_d = half_c + half_n apart (so A/δ_d = width along t).
           row.b += s * edge_mu * (un_e - uc_e) * disc.width(l, t);
         }
       }

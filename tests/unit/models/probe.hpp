@@ -54,12 +54,17 @@ inline double scaled_pressure_slope(const models::SolidsStressModel& model, cons
                        scaled_pressure(model, m, phi, to));
 }
 
-// The model with `given` coefficients; mfix-default's required ε_g* is 0.4 unless given.
-inline std::unique_ptr<models::SolidsStressModel> make_model(
-    const std::string& name, const models::Coefficients& given = {}) {
+// `given`, with the tests' value of every coefficient a model requires: mfix-default's ε_g* 0.4.
+inline models::Coefficients test_coefficients(const std::string& name, const models::Coefficients& given = {}) {
   models::Coefficients with = given;
   if (name == "mfix-default" && !with.contains("packed_gas_fraction")) with["packed_gas_fraction"] = 0.4;
-  return models::stress_registry().create(name, with);
+  return with;
+}
+
+// The model with `given` coefficients (test_coefficients fills the required ones).
+inline std::unique_ptr<models::SolidsStressModel> make_model(
+    const std::string& name, const models::Coefficients& given = {}) {
+  return models::stress_registry().create(name, test_coefficients(name, given));
 }
 
 }  // namespace bagnold::tests

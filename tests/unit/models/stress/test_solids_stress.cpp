@@ -124,9 +124,7 @@ TEST(SolidsStress, PackingLimitIsWhatTheWallsLookedUpByName) {
                                       ? models::Coefficients{{"packed_gas_fraction", 0.45}}
                                       : models::Coefficients{}}) {
       const auto model = make_model(entry.name, given);
-      models::Coefficients complete = given;  // mfix-default's required ε_g*, as make_model
-      if (entry.name == "mfix-default" && !complete.contains("packed_gas_fraction")) complete["packed_gas_fraction"] = 0.4;
-      const auto resolved = models::resolve(entry.coefficients, complete);
+      const auto resolved = models::resolve(entry.coefficients, test_coefficients(entry.name, given));
       for (const double friction : {0.0, 0.1, 0.2, 0.3, 0.5, 0.77, 1.0}) {
         Material m;
         m.friction = friction;

@@ -43,7 +43,8 @@ bool FlowSolver::iterate(run::FlowState& state, const run::FlowState& old, doubl
   return true;
 }
 
-StepResult FlowSolver::advance(run::FlowState& state, const run::FlowState& old, double dt) {
+StepResult FlowSolver::advance(run::FlowState& state, const run::FlowState& old, double dt,
+                               bool (*stop_probe)()) {
   StepResult result;
   apply_boundary_values(state);
   // BAGNOLD_TRACE=1: every outer iteration's residuals and the cell of the largest, on stderr.
@@ -51,12 +52,19 @@ StepResult FlowSolver::advance(run::FlowState& state, const run::FlowState& old,
   const auto& comm = m_discretization.layout().comm();
   const double largest_scale = scale_growth_cap * residual_velocity_scale(old, INFINITY, nullptr);
   if (m_pressure) m_pressure->start_step();
+  if (m_anderson) m_anderson->start_step(old);
   for (int iteration = 1; iteration <= m_settings.max_outer_iterations; ++iteration) {
     IterationSums sums;
     const double velocity_scale = residual_velocity_scale(state, largest_scale, &sums);
     result.iterations = iteration;
+    if (m_anderson) m_anderson->remember_input(state);
     if (!iterate(state, old, dt, iteration == 1, velocity_scale, sums, result)) return result;
-    sums.reduce(comm);
+    sums.stop = stop_probe && stop_probe() ? 1.0 : 0.0;
+    sums.reduce(comm);  // one Allreduce: residual sums, limiter counts, a stop request
+    if (sums.stop > 0.0) {
+      result.abandoned = true;
+      return result;
+    }
     for (int e = 0; e < 6; ++e)
       result.residuals.value[static_cast<std::size_t>(e)] =
           sums.normalization[static_cast<std::size_t>(e)].value(sums.momentum[static_cast<std::size_t>(e)]);
@@ -71,6 +79,7 @@ StepResult FlowSolver::advance(run::FlowState& state, const run::FlowState& old,
     for (int i = 0; i < intervention_count; ++i)
       result.interventions[static_cast<std::size_t>(i)] += sums.interventions[static_cast<std::size_t>(i)];
     const double largest = result.residuals.largest();
+    if (iteration == 1) result.first_largest = largest;
     if (trace) {
       const auto where = worst_cell(result.residuals.worst());  // collective
       if (comm.is_root()) {
@@ -89,6 +98,10 @@ StepResult FlowSolver::advance(run::FlowState& state, const run::FlowState& old,
       result.converged = true;
       return result;
     }
+    // The next iteration starts from Anderson's mixture of the last results (anderson_mixing.hpp).
+    if (m_anderson)
+      result.interventions[anderson_clipped] +=
+          static_cast<double>(comm.sum(static_cast<double>(m_anderson->mix(state, velocity_scale))));
   }
   return result;
 }

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "solver/simple/row_location.hpp"
 #include "solver/simple/solids_conservation.hpp"
 
 namespace bagnold::solver {
@@ -18,6 +19,8 @@ FlowSolver::FlowSolver(const deck::Deck& deck, const parallel::Domain& domain)
     m_pressure = std::make_unique<PressureCorrection>(deck, m_discretization, m_settings);
   if (m_settings.moves[solids])
     m_fraction = std::make_unique<VolumeFractionCorrection>(m_discretization, m_settings, m_closures);
+  if (m_settings.anderson_depth > 0)
+    m_anderson = std::make_unique<AndersonMixing>(domain.layout, m_settings.anderson_depth);
 }
 
 double FlowSolver::residual_velocity_scale(const run::FlowState& state, double cap,
@@ -38,19 +41,21 @@ double FlowSolver::residual_velocity_scale(const run::FlowState& state, double c
 
 CellLocation FlowSolver::worst_cell(int equation) const {
   const auto& layout = m_discretization.layout();
-  const auto& grid = m_discretization.domain().grid;
+  const auto& domain = m_discretization.domain();
   const int local = m_worst.local(equation);
   struct {
     double value;
     int rank;
   } mine{local >= 0 ? m_worst.value(equation) : -1.0, layout.comm().rank()}, worst{};
   MPI_Allreduce(&mine, &worst, 1, MPI_DOUBLE_INT, MPI_MAXLOC, layout.comm().get());
-  std::int64_t natural = local >= 0 ? layout.natural(local) : 0;
-  MPI_Bcast(&natural, 1, MPI_INT64_T, worst.rank, layout.comm().get());
-  CellLocation where;
-  where.cell = grid.index3(natural);
-  where.position = grid.centre(where.cell);
-  return where;
+  // A momentum row is the face between its owning cell and the owner's + neighbour along d;
+  // either may be a boundary cell (an opening's face is owned by the cell beyond it).
+  const bool momentum = equation < mixture_continuity;
+  const int d = equation % 3;
+  const int plus = local >= 0 && momentum ? layout.neighbour(local, 2 * d + 1) : -1;
+  std::int64_t naturals[2] = {local >= 0 ? layout.natural(local) : 0, plus >= 0 ? layout.natural(plus) : -1};
+  MPI_Bcast(naturals, 2, MPI_INT64_T, worst.rank, layout.comm().get());
+  return locate_row(domain, equation, naturals[0], naturals[1]);
 }
 
 void FlowSolver::apply_boundary_values(run::FlowState& state) const {

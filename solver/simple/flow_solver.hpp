@@ -32,6 +32,7 @@
 #include <vector>
 
 #include "solver/discretization.hpp"
+#include "solver/simple/anderson_mixing.hpp"
 #include "solver/simple/closures.hpp"
 #include "solver/simple/momentum_predictor.hpp"
 #include "solver/simple/pressure_correction.hpp"
@@ -51,8 +52,11 @@ class FlowSolver {
   // Sets the boundary values every stencil reads: given face velocities, boundary pressures,
   // the solids fraction of boundary cells.
   void apply_boundary_values(run::FlowState& state) const;
-  // Advances `state` (holding the last iterate, initially `old`) by one time step dt.
-  StepResult advance(run::FlowState& state, const run::FlowState& old, double dt);
+  // Advances `state` (holding the last iterate, initially `old`) by one time step dt. After
+  // every outer iteration, if `stop_probe` returns true on any rank, all ranks abandon the step
+  // together (StepResult::abandoned; `state` is then not a solution).
+  StepResult advance(run::FlowState& state, const run::FlowState& old, double dt,
+                     bool (*stop_probe)() = nullptr);
 
   // An extra gas momentum source [N/m³] at each face velocity of direction d (local_count()
   // entries, indexed by the owning cell), e.g. a manufactured solution's forcing. Empty: none.
@@ -104,6 +108,7 @@ class FlowSolver {
   IterationFields m_fields;
   WorstCells m_worst;
   std::vector<double> m_stepped_solids_flux;  // set by conserve_solids
+  std::unique_ptr<AndersonMixing> m_anderson;  // null: Picard (numerics.anderson_depth = 0)
 };
 
 }  // namespace bagnold::solver

@@ -13,6 +13,7 @@ SolverSettings::SolverSettings(const deck::Deck& deck, const parallel::Domain& d
       gravity(deck.physics.gravity),
       tolerance(deck.numerics.tolerance),
       max_outer_iterations(deck.numerics.max_outer_iterations),
+      anderson_depth(deck.numerics.anderson_depth),
       relax_velocity(deck.numerics.relax_velocity),
       relax_pressure(deck.numerics.relax_pressure),
       simplec(deck::choice_value(deck::coupling_choices, deck.numerics.algorithm, "algorithm") ==

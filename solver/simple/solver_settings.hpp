@@ -28,6 +28,7 @@ struct SolverSettings {
 
   double tolerance = 1e-4;  // numerics.tolerance
   int max_outer_iterations = 40;
+  int anderson_depth = 0;  // numerics.anderson_depth: 0 Picard
   double relax_velocity = 0.7;  // α_u
   double relax_pressure = 1.0;  // α_p
   bool simplec = true;

@@ -1,6 +1,8 @@
 // Residual bookkeeping of the outer iteration (step_record.hpp).
 #include "solver/simple/step_record.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 
 namespace bagnold::solver {
@@ -15,7 +17,7 @@ const char* equation_name(int equation) {
 const char* intervention_name(int intervention) {
   static const char* names[intervention_count] = {
       "limit_compression", "limit_zero_fraction", "limit_negative_stiffness",
-      "limit_velocity_scale_cap", "limit_velocity_scale_floor"};
+      "limit_velocity_scale_cap", "limit_velocity_scale_floor", "limit_anderson_clipped"};
   return names[intervention];
 }
 
@@ -36,9 +38,22 @@ int Residuals::worst() const {
   return worst;
 }
 
+bool StepResult::diverged() const {
+  const double last = residuals.largest();
+  return !std::isfinite(last) || last > first_largest;
+}
+
+std::string CellLocation::text() const {
+  std::string s = fmt::format("cell ({}, {}, {}) at ({:.4g}, {:.4g}, {:.4g}) m", cell[0], cell[1],
+                              cell[2], position[0], position[1], position[2]);
+  if (!face.empty()) s += ", its " + face + " face";
+  if (!region.empty()) s += " (on boundary region '" + region + "')";
+  return s;
+}
+
 void IterationSums::reduce(const parallel::Communicator& comm) {
   // One contiguous buffer, one Allreduce: 6 × 4 momentum sums, 2 × 2 continuity sums, counters.
-  constexpr std::size_t count = 6 * MomentumResidual::Sums::size + 4 + intervention_count;
+  constexpr std::size_t count = 6 * MomentumResidual::Sums::size + 4 + intervention_count + 1;
   std::array<double, count> buffer{};
   std::size_t k = 0;
   for (auto& m : momentum)
@@ -46,6 +61,7 @@ void IterationSums::reduce(const parallel::Communicator& comm) {
   for (auto& c : continuity)
     for (double& v : c) buffer[k++] = v;
   for (double& v : interventions) buffer[k++] = v;
+  buffer[k++] = stop;
   comm.sum_in_place(buffer.data(), count);
   k = 0;
   for (auto& m : momentum)
@@ -53,6 +69,7 @@ void IterationSums::reduce(const parallel::Communicator& comm) {
   for (auto& c : continuity)
     for (double& v : c) v = buffer[k++];
   for (double& v : interventions) v = buffer[k++];
+  stop = buffer[k++];
 }
 
 void WorstCells::reset(int equation) {

@@ -39,6 +39,7 @@ enum Intervention : int {
   negative_stiffness,        // dP_s/dε_s < 0 kept explicit in e (unknown faces)
   velocity_scale_capped,     // the residual velocity scale held at 10× the step start's (iterations)
   velocity_scale_floored,    // the residual velocity scale raised to 1e-3 of the reference speed (iterations)
+  anderson_clipped,          // an Anderson mixture's ε_s clipped into the images' range (cells)
   intervention_count
 };
 const char* intervention_name(int intervention);  // the monitor column
@@ -53,13 +54,19 @@ struct IterationSums {
   std::array<MomentumResidual, 6> normalization{};       // how each turns into a residual
   std::array<std::array<double, 2>, 2> continuity{};     // mixture, solids: {Σ|R|, Σ ½|Q|}
   std::array<double, intervention_count> interventions{};
+  double stop = 0.0;  // > 0 on a rank asked to stop (a signal): every rank learns it in reduce()
   void reduce(const parallel::Communicator& comm);
 };
 
-// Where an equation's residual is largest: for the message when a run cannot continue.
+// Where an equation's residual is largest: for the message when a run cannot continue. Always a
+// fluid cell; for a momentum equation also which of its faces carries the velocity and, when
+// that face is on the domain's boundary, the boundary region beyond it.
 struct CellLocation {
   grid::Index3 cell{0, 0, 0};
   std::array<double, 3> position{0, 0, 0};  // cell centre [m]
+  std::string face;    // "+z", "-x", ...: the face of a momentum equation's row; empty otherwise
+  std::string region;  // the boundary region beyond that face, empty inside the fluid
+  std::string text() const;  // "cell (i, j, k) at (x, y, z) m[, its +z face (on region 'r')]"
 };
 
 // The local cell of each equation's largest row residual in the current outer iteration.
@@ -85,10 +92,15 @@ struct StepResult {
   bool converged = false;
   int iterations = 0;
   Residuals residuals;  // of the last outer iteration
+  double first_largest = 0.0;  // the largest residual of the first outer iteration
+  // "diverged" when a residual became non-finite or the largest grew over the step's outer
+  // iterations; "stalled" when it fell but not below the tolerance.
+  bool diverged() const;
   // Summed over the step's outer iterations and all ranks.
   std::array<double, intervention_count> interventions{};
   std::array<double, linear_system_count> linear_iterations{};
   std::string failure;  // why the step stopped early (a linear solve that failed), else empty
+  bool abandoned = false;  // stopped on request (a signal) between two outer iterations
 };
 
 }  // namespace bagnold::solver

@@ -51,12 +51,23 @@ RunSummary run_time_loop(const TimeLoopContext& context, FlowSolver& flow, run::
   const double tiny = 1e-12 * std::max(1.0, end);
 
   while (time < end - tiny) {
-    double dt_try = std::min(controller.dt(), end - time);
-    const double to_snapshot = context.output.next_snapshot_time() - time;
-    if (to_snapshot > tiny && to_snapshot < dt_try) dt_try = to_snapshot;
+    // Only the last step is shortened, to land on run.end_time; a snapshot is written at the end
+    // of the first step that reaches its scheduled time, so the schedule never changes the answer.
+    const double dt_try = std::min(controller.dt(), end - time);
     old = state;
-    const StepResult result = flow.advance(state, old, dt_try);
+    const StepResult result = flow.advance(state, old, dt_try, run::signal_received);
     summary.outer_iterations += result.iterations;
+    if (result.abandoned) {
+      // A signal: the step in progress is dropped and the last completed one written at once.
+      state = old;
+      if (!context.output.written_at(time))
+        context.output.write(state, time, step, summary.last_dt, controller.dt(), controller.memory());
+      summary.interrupted = true;
+      context.log(fmt::format("t = {:.6g} s: stopped by signal {} in outer iteration {} of a step; "
+                              "that step was abandoned; final snapshot written at t = {:.6g} s",
+                              time, run::stop_signal(), result.iterations, time));
+      break;
+    }
     if (!result.converged) {
       failed = state;
       state = old;
@@ -75,12 +86,21 @@ RunSummary run_time_loop(const TimeLoopContext& context, FlowSolver& flow, run::
         const int worst = result.residuals.worst();
         const auto where = flow.worst_cell(worst);
         const std::string diagnostic = context.output.write_diagnostic(failed, time, step, dt_try);
+        const double value = result.residuals.value[static_cast<std::size_t>(worst)];
+        const std::string how =
+            result.diverged()
+                ? fmt::format("the {} equation diverged (normalized residual {:.3g}; the step's "
+                              "largest was {:.3g} in its first outer iteration)",
+                              solver::equation_name(worst), value, result.first_largest)
+                : fmt::format("the outer iteration stalled: the {} equation's normalized residual "
+                              "{:.3g} stayed above numerics.tolerance = {:.3g} (the step's largest "
+                              "was {:.3g} in its first outer iteration)",
+                              solver::equation_name(worst), value, context.deck.numerics.tolerance,
+                              result.first_largest);
         summary.failure = fmt::format(
-            "the time step fell below run.dt_min = {:.3g} s at t = {:.6g} s; the {} equation "
-            "diverged (normalized residual {:.3g}), worst in cell ({}, {}, {}) at ({:.4g}, {:.4g}, "
-            "{:.4g}) m; the failed iterate is in {}",
-            run.dt_min, time, solver::equation_name(worst), result.residuals.value[static_cast<std::size_t>(worst)], where.cell[0], where.cell[1],
-            where.cell[2], where.position[0], where.position[1], where.position[2], diagnostic);
+            "the time step fell below run.dt_min = {:.3g} s at t = {:.6g} s; {}, worst in {}; the "
+            "failed iterate is in {}",
+            run.dt_min, time, how, where.text(), diagnostic);
         break;
       }
       continue;

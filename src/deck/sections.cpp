@@ -241,6 +241,14 @@ const Section<Numerics>& numerics_section() {
                "cases/chute/README.md). No effect without gravity."),
       key(&Numerics::max_outer_iterations, "max_outer_iterations").init().within(1, 1000)
           .doc("SIMPLE outer iterations before the step is redone with dt / 2."),
+      key(&Numerics::anderson_depth, "anderson_depth").init().within(0, 20)
+          .doc("0: each outer iteration starts from the last one's result (Picard). m > 0: from "
+               "Anderson's mixture of the last m + 1 results, the affine combination whose "
+               "residuals (result minus start) are least in a norm that weighs each field by its "
+               "scale (Walker & Ni 2011). It changes how a step converges, not the equations a "
+               "converged step satisfies. Where a mixture would take ε_s below 0 or above the "
+               "largest ε_s the results hold, ε_s is clipped into that range (monitor column "
+               "limit_anderson_clipped)."),
       key(&Numerics::easy_outer_iterations, "easy_outer_iterations").init().within(1, 1000)
           .doc("A step converged in at most this many iterations lets dt grow."),
       key(&Numerics::hard_outer_iterations, "hard_outer_iterations").init().within(0, 1000)
@@ -303,7 +311,10 @@ const Section<Output>& output_section() {
       key(&Output::directory, "directory").required()
           .doc("Where snapshots, the XDMF index and the monitor go (created if missing)."),
       key(&Output::snapshot_interval, "snapshot_interval").unit("s").init().above(0.0)
-          .doc("Simulated time between HDF5 snapshots."),
+          .doc("Simulated time between HDF5 snapshots. Each is written at the end of the first step that "
+               "reaches its scheduled time, at that step's time: steps are not shortened for "
+               "output, so the schedule does not change the answer (the final step lands on "
+               "run.end_time)."),
       key(&Output::progress, "progress").init().one_of({"auto", "always", "never"})
           .doc("Progress line on stderr: auto shows it only when stderr is a terminal."),
   }};

@@ -21,7 +21,8 @@ class OutputWriter {
   // Collective. Throws io::Hdf5Error with the directory's name if it cannot be created or written.
   OutputWriter(const deck::Deck& deck, const parallel::Domain& domain);
 
-  double next_snapshot_time() const { return m_next_time; }
+  // True at the end of the first step that reaches the next scheduled snapshot time (steps are
+  // not shortened to land on it).
   bool snapshot_due(double time) const { return time >= m_next_time - 1e-12 * (1.0 + time); }
   // Collective: writes a snapshot of `state` and updates the index; returns its path.
   // `time_step_memory`: the time-step controller's state, for an exact restart.
@@ -34,6 +35,8 @@ class OutputWriter {
   // schedules it after `time`. Collective.
   void resume(double time);
   const std::string& directory() const { return m_directory; }
+  // Whether the last snapshot in the index is at `time` (nothing new to write).
+  bool written_at(double time) const { return !m_index.empty() && m_index.back().time == time; }
 
  private:
   const parallel::Domain& m_domain;

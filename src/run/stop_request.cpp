@@ -19,6 +19,8 @@ bool stop_requested(const parallel::Communicator& comm) {
   return comm.max(static_cast<std::int64_t>(received_signal)) != 0;
 }
 
+bool signal_received() { return received_signal != 0; }
+
 int stop_signal() { return static_cast<int>(received_signal); }
 
 }  // namespace bagnold::run

@@ -1,7 +1,7 @@
 #!/bin/sh
 # A restart from a snapshot copied alone into a fresh directory numbers its snapshots after it,
-# so the one it started from is never overwritten: the cavity runs to t = 0.1 s (snapshots every
-# 0.02 s: snapshot_000005.h5 at 0.1 s), that file alone is copied to a new directory and
+# so the one it started from is never overwritten: the cavity runs to t = 0.1 s (steps and
+# snapshots every 0.02 s: snapshot_000005.h5 at 0.1 s), that file alone is copied to a new directory and
 # restarted there to 0.16 s, beside stray files no run writes (snapshot_+00007.h5,
 # snapshot_00009.h5, snapshot_000010.h5.tmp: not snapshots, ignored). The directory must then
 # hold 000005 (still at t = 0.1 s) and 000006-000008 (0.12-0.16 s), and run.xmf must list all four.
@@ -9,7 +9,7 @@
 set -eu
 bagnold=$1; work=$2
 deck=tests/verification/lid_driven_cavity/re100.toml
-grid="--set grid.x.cells=16 --set grid.z.cells=16 --set output.progress=never --set output.snapshot_interval=0.02"
+grid="--set grid.x.cells=16 --set grid.z.cells=16 --set output.progress=never --set output.snapshot_interval=0.02 --set run.dt_initial=0.02 --set run.dt_max=0.02"
 rm -rf "$work"
 $bagnold run $deck $grid --set run.end_time=0.1 --set output.directory=$work/first > /dev/null
 mkdir -p "$work/second"

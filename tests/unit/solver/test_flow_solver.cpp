@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "solver/simple/flow_solver.hpp"
+#include "solver/simple/row_location.hpp"
 #include "src/run/initial_state.hpp"
 #include "tests/support/petsc_environment.hpp"
 #include "tests/unit/solver/solver_case.hpp"
@@ -125,6 +126,37 @@ TEST(FlowSolver, AFailedLinearSolveFailsTheStepWithItsReason) {
   const auto fine = ok.flow.advance(ok.c.state, ok.c.old, 1e-2);
   EXPECT_TRUE(fine.converged) << fine.failure;
   EXPECT_TRUE(fine.failure.empty());
+}
+
+TEST(FlowSolver, AFailedRowIsLocatedInAFluidCellAndItsOpeningByName) {
+  // An outlet on the bottom face: its z-faces are owned by the boundary cells below the fluid.
+  const std::string outlet =
+      "[[boundary]]\nname = \"orifice\"\ntype = \"pressure_outflow\"\nface = \"z-\"\n";
+  const Case c(unit_deck(2, 2, 3, "", 0.0, gas_only() + outlet));
+  const auto& grid = c.domain.grid;
+  auto natural = [&](int i, int j, int k) { return grid.natural(grid::Index3{i, j, k}); };
+  // The face below cell (1, 0, 0), owned by (1, 0, -1): the fluid cell above, its -z face.
+  auto where = solver::locate_row(c.domain, solver::gas_momentum_z, natural(1, 0, -1), natural(1, 0, 0));
+  EXPECT_EQ(where.cell, (grid::Index3{1, 0, 0}));
+  EXPECT_EQ(where.face, "-z");
+  EXPECT_EQ(where.region, "orifice");
+  EXPECT_NEAR(where.position[2], 0.005, 1e-12);
+  // An interior face: the owner and its + face, no region.
+  where = solver::locate_row(c.domain, solver::solids_momentum_x, natural(0, 1, 2), natural(1, 1, 2));
+  EXPECT_EQ(where.cell, (grid::Index3{0, 1, 2}));
+  EXPECT_EQ(where.face, "+x");
+  EXPECT_EQ(where.region, "");
+  // The top face of the top cell: a wall beyond (the default region), named as such.
+  where = solver::locate_row(c.domain, solver::gas_momentum_z, natural(0, 0, 2), natural(0, 0, 3));
+  EXPECT_EQ(where.cell, (grid::Index3{0, 0, 2}));
+  EXPECT_EQ(where.face, "+z");
+  EXPECT_FALSE(where.region.empty());
+  EXPECT_NE(where.region, "orifice");
+  // A continuity row is its cell.
+  where = solver::locate_row(c.domain, solver::solids_continuity, natural(1, 1, 1), -1);
+  EXPECT_EQ(where.cell, (grid::Index3{1, 1, 1}));
+  EXPECT_EQ(where.face, "");
+  EXPECT_EQ(where.text(), "cell (1, 1, 1) at (0.015, 0.015, 0.015) m");
 }
 
 }  // namespace

@@ -151,5 +151,25 @@ TEST(StepRecord, WorstCellsKeepTheLargestRowAndNaNCountsAsLargest) {
   EXPECT_EQ(worst.value(solver::gas_momentum_x), INFINITY);
 }
 
+TEST(StepRecord, AStepThatFailedDivergedOnlyIfItsLargestResidualGrewOrBecameNonFinite) {
+  solver::StepResult result;
+  result.first_largest = 2e-2;
+  result.residuals.value[solver::solids_continuity] = 1.3e-3;  // fell, not to the tolerance
+  EXPECT_FALSE(result.diverged());
+  result.residuals.value[solver::solids_continuity] = 5e-2;  // grew
+  EXPECT_TRUE(result.diverged());
+  result.residuals.value[solver::solids_continuity] = std::nan("");
+  EXPECT_TRUE(result.diverged());
+}
+
+TEST(StepRecord, ALocationReadsAsCellFaceAndRegion) {
+  solver::CellLocation where;
+  where.cell = {0, 2, 0};
+  where.position = {0.005, 0.025, 0.005};
+  where.face = "-z";
+  where.region = "orifice";
+  EXPECT_EQ(where.text(), "cell (0, 2, 0) at (0.005, 0.025, 0.005) m, its -z face (on boundary region 'orifice')");
+}
+
 }  // namespace
 }  // namespace bagnold::tests

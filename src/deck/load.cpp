@@ -1,6 +1,7 @@
 #include "src/deck/load.hpp"
 
 #include <fstream>
+#include <map>
 #include <set>
 #include <span>
 #include <sstream>
@@ -519,6 +520,25 @@ std::optional<toml::table> resolve_extends(toml::table deck, const std::string& 
   return resolved_base;
 }
 
+// Every table, array element and key of `table` into `out` under its dotted path, for the
+// checks made after loading (Deck::origins).
+void record_origins(const toml::table& table, const std::string& path, const Diagnostics& diag,
+                    std::map<std::string, Origin>& out) {
+  for (auto&& [k, node] : table) {
+    const std::string key = path.empty() ? std::string(k.str()) : path + "." + std::string(k.str());
+    out[key] = diag.origin(node.source(), key);
+    if (const auto* sub = node.as_table()) {
+      record_origins(*sub, key, diag, out);
+    } else if (const auto* array = node.as_array(); array && array->is_array_of_tables()) {
+      for (std::size_t i = 0; i < array->size(); ++i) {
+        const std::string element = key + "[" + std::to_string(i) + "]";
+        out[element] = diag.origin((*array)[i].source(), element);
+        record_origins(*(*array)[i].as_table(), element, diag, out);
+      }
+    }
+  }
+}
+
 enum class Scope { whole_deck, material_and_models };
 
 Deck load(const std::string& text, const std::string& source_name,
@@ -532,6 +552,7 @@ Deck load(const std::string& text, const std::string& source_name,
   deck.source = source_name;
   if (scope == Scope::whole_deck) {
     read_all(*root, deck, diag);
+    record_origins(*root, "", diag, deck.origins);
   } else {
     read_material_and_models(*root, deck, diag);
   }

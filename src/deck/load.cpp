@@ -411,6 +411,36 @@ void check_closure_material(const toml::table* solids, const Deck& deck, Diagnos
   }
 }
 
+// Each [[initial]] region's ε_s at most the selected closure's packing limit φ_max for the
+// deck's material (SolidsStressModel::packing_limit: φ_c(μ) of App. A Table I for the kinetic
+// models and the rheologies, 1 − ε_g* for the plastic-pressure closures): a fill above it
+// starts compressed past jamming, where the closures cap or blow up. Only where the closure is
+// used (solids that move); 1e-12 absorbs the rounding of a limit written as 1 − ε_g*.
+void check_initial_packing(const toml::table& root, const Deck& deck, Diagnostics& diag) {
+  if (!deck.solids.enabled || !deck.solids.momentum || deck.initial.empty()) return;
+  const auto& choice = deck.models.solids_stress;
+  std::unique_ptr<models::SolidsStressModel> model;
+  try {
+    model = models::stress_registry().create(choice.name, choice.coefficients);
+  } catch (const std::exception&) {
+    return;  // an unknown closure or bad coefficients are reported where they are named
+  }
+  const double limit = model->packing_limit(deck.solids.material);
+  const auto* array = root.get_as<toml::array>("initial");
+  for (std::size_t i = 0; i < deck.initial.size(); ++i) {
+    const double fraction = deck.initial[i].solids_fraction;
+    if (!(fraction > limit + 1e-12)) continue;
+    const auto* table = array && i < array->size() ? (*array)[i].as_table() : nullptr;
+    const toml::node* node = table ? table->get("solids_fraction") : nullptr;
+    diag.error(node ? node->source() : table ? table->source() : root.source(),
+               "initial[" + std::to_string(i) + "].solids_fraction",
+               "value " + to_toml_text(fraction) + " is above the packing limit " +
+                   to_toml_text(limit) + " of the closure models.solids_stress.model = \"" +
+                   choice.name + "\" for the deck's [solids]: expected at most " +
+                   to_toml_text(limit) + " (docs/models.md gives each closure's limit)");
+  }
+}
+
 void read_material_and_models(const toml::table& root, Deck& deck, Diagnostics& diag) {
   const toml::table* solids = subtable(root, "solids", "solids", diag);
   read_section(solids, solids_section(), "solids", deck.solids.material, diag);
@@ -448,6 +478,7 @@ void read_all(const toml::table& root, Deck& deck, Diagnostics& diag) {
   read_material_and_models(root, deck, diag);
   check_solids_walls(root, deck, diag);
   deck.initial = read_array_of_tables(root, "initial", "initial", initial_section(), diag);
+  check_initial_packing(root, deck, diag);
   read_section(subtable(root, "numerics", "numerics", diag), numerics_section(), "numerics",
                deck.numerics, diag);
   read_section(subtable(root, "output", "output", diag), output_section(), "output", deck.output,

@@ -48,6 +48,11 @@ void Communicator::sum_in_place(double* values, std::size_t count) const {
   MPI_Allreduce(MPI_IN_PLACE, values, static_cast<int>(count), MPI_DOUBLE, MPI_SUM, m_comm);
 }
 
+void Communicator::sum_in_place(std::vector<std::int64_t>& values) const {
+  MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_INT64_T, MPI_SUM,
+                m_comm);
+}
+
 std::int64_t Communicator::exclusive_scan(std::int64_t x) const {
   std::int64_t out = 0;
   MPI_Exscan(&x, &out, 1, MPI_INT64_T, MPI_SUM, m_comm);

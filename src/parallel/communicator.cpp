@@ -65,6 +65,14 @@ std::vector<std::int64_t> Communicator::all_gather(std::int64_t x) const {
   return out;
 }
 
+double Communicator::sum_on_node(double x) const {
+  MPI_Comm node = MPI_COMM_NULL;
+  MPI_Comm_split_type(m_comm, MPI_COMM_TYPE_SHARED, m_rank, MPI_INFO_NULL, &node);
+  const double sum = all_reduce(x, MPI_DOUBLE, MPI_SUM, node);
+  MPI_Comm_free(&node);
+  return sum;
+}
+
 void Communicator::barrier() const { MPI_Barrier(m_comm); }
 
 }  // namespace bagnold::parallel

@@ -703,6 +703,49 @@ std::vector<KeyInfo> coefficient_infos(const std::vector<models::CoefficientSpec
   return keys;
 }
 
+// How blocks and regions select cells (src/grid/cell_flags.hpp, src/run/initial_state.hpp) and
+// what check refuses of them (src/app/preflight.hpp), for the key reference.
+const char* const region_selection_markdown = R"(
+## How regions select cells
+
+Every block and region selects whole cells by their centres (walls are staircases at the grid
+scale); a box includes its faces.
+
+- `[[geometry.block]]` makes solid each domain cell whose centre lies inside its shape
+  (`blocks = "inside"`) or outside it (`blocks = "outside"`; for a cylinder or cone, around it
+  between its end planes). Blocked cells next to fluid become boundary cells; the others are not
+  stored.
+- `[[boundary]]` selects boundary cells: the layer of cells just outside each domain face that is
+  not periodic (one cell thick, edges and corners included), and the blocked cells next to fluid
+  (`face = "internal"`). A region takes the boundary cells of its `face` whose centres lie in its
+  box [`min`, `max`]. **The centres of a domain face's boundary cells lie half a cell beyond the
+  face** (at z = −Δz/2 below a floor at z = 0), so a box on a domain face must reach past the face:
+  `min = [0.0, 0.0, -1.0]`, `max = [0.01, 0.04, 0.0]` selects a 1 cm strip of such a floor, and
+  `min = [0.0, 0.0, 0.0]` none of it. A cell that several regions select belongs to the first one
+  listed (first wins); cells that no region selects belong to the implicit region `walls`
+  (`geometry.default_wall`).
+- `[[initial]]` sets the fluid cells whose centres lie in its box; a cell that several regions
+  select is set by the last one listed (later wins). Cells that no region selects start with no
+  solids and at rest.
+
+`bagnold check` prints each block's and region's cells and each initial region's solids mass
+(ρ_s ε_s V over the cells it sets, in kg), notes every pair of boundary regions and every pair of
+initial regions that select the same cells (with their number and which region gets them), and
+refuses, with exit code 2 and the line of the table or key:
+
+- a block that blocks no cell;
+- a boundary region that selects no cell, or all of whose cells belong to earlier regions;
+- an initial region that selects no cell;
+- an initial `solids_fraction` above the selected closure's packing limit for the deck's
+  material (docs/models.md, "Packing limit and wall g0"), where the solids move
+  (`solids.momentum = true`);
+- a grid whose estimated memory is more than the machine has, at the largest axis's `cells`
+  (docs/reliability.md, "Memory estimate").
+
+`bagnold run` refuses the same before anything runs. An error caused by a `--set` names the
+`--set` argument instead of the deck's line.
+)";
+
 template <class T>
 void reference_section(std::ostringstream& s, const Section<T>& section, const std::string& head) {
   reference_table(s, head + " — " + section.title, section.infos());
@@ -738,6 +781,7 @@ std::string key_reference_markdown() {
     reference_table(s, "`[models.drag." + entry.name + "]` — " + entry.summary,
                     coefficient_infos(entry.coefficients));
   reference_section(s, initial_section(), "`[[initial]]`");
+  s << region_selection_markdown;
   reference_section(s, numerics_section(), "`[numerics]`");
   reference_section(s, output_section(), "`[output]`");
   return s.str();

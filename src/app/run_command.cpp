@@ -10,10 +10,10 @@
 #include "src/run/stop_request.hpp"
 #include "src/app/commands.hpp"
 #include "src/app/exit_codes.hpp"
+#include "src/app/preflight.hpp"
 #include "src/app/time_loop.hpp"
 #include "src/deck/load.hpp"
 #include "src/io/monitor.hpp"
-#include "src/parallel/domain_summary.hpp"
 #include "src/run/initial_state.hpp"
 #include "src/run/monitor_columns.hpp"
 #include "src/run/output_writer.hpp"
@@ -63,11 +63,14 @@ int run_command(const DeckArguments& args) {
   }
   const parallel::Communicator comm;
   try {
-    const parallel::Domain domain(deck, comm);
-    const auto summary = parallel::summarize(domain);
-    say("bagnold run: " + args.deck + "\n" +
-        parallel::summary_text(domain, summary,
-                               static_cast<int>(run::FlowState::field_names().size())));
+    const auto prepared = preflight(deck, comm);
+    say("bagnold run: " + args.deck + "\n" + prepared.text);
+    if (!prepared.errors.ok()) {
+      say(prepared.errors.report() + "bagnold run: " + args.deck + " is not valid; nothing was run",
+          true);
+      return bad_input;
+    }
+    const parallel::Domain& domain = *prepared.domain;
     run::FlowState state(domain.layout.local_count());
     run::set_initial_state(deck, domain, state);
     StartPoint start{0.0, 0, deck.run.dt_initial, "", {}};

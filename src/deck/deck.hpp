@@ -138,6 +138,15 @@ struct Output {
   std::string progress = "auto";   // auto | always | never
 };
 
+// Where a value of the deck was written: the file, line and column, or the --set argument that
+// gave it (line 0). Checks made after loading (a region that selects no cell, a grid too large
+// for the machine) point at it as the loader's own errors do.
+struct Origin {
+  std::string file;
+  int line = 0;
+  int column = 0;
+};
+
 struct Deck {
   std::string source;  // path of the deck file
   RunControl run;
@@ -151,6 +160,10 @@ struct Deck {
   std::vector<InitialRegion> initial;
   Numerics numerics;
   Output output;
+  // Every table, array element and key of the deck by its dotted path as messages name it
+  // ("boundary[1]", "grid.z.cells"); origin_of falls back to the deck file without a line.
+  std::map<std::string, Origin> origins;
+  Origin origin_of(const std::string& path) const;
 };
 
 }  // namespace bagnold::deck

@@ -1,5 +1,7 @@
 #include "src/deck/diagnostics.hpp"
 
+#include <algorithm>
+
 namespace bagnold::deck {
 
 std::string Diagnostic::to_string() const {
@@ -16,19 +18,54 @@ std::string Diagnostic::to_string() const {
   return out + message;
 }
 
+Origin Deck::origin_of(const std::string& path) const {
+  const auto it = origins.find(path);
+  return it != origins.end() ? it->second : Origin{source, 0, 0};
+}
+
+namespace {
+bool starts_with(const std::string& s, const std::string& prefix) { return s.rfind(prefix, 0) == 0; }
+// Whether `inner` names a key below the table `outer` ("boundary[1].max" below "boundary[1]"
+// and below "boundary").
+bool is_below(const std::string& inner, const std::string& outer) {
+  return !outer.empty() && (starts_with(inner, outer + ".") || starts_with(inner, outer + "["));
+}
+}  // namespace
+
+Origin Diagnostics::origin(const toml::source_region& where, const std::string& key) const {
+  Origin at{where.path ? *where.path : std::string(), static_cast<int>(where.begin.line),
+            static_cast<int>(where.begin.column)};
+  // toml++ does not keep source positions on nodes inserted by an override.
+  bool overridden = false;
+  for (const auto& [override_key, origin] : m_overrides)
+    if (key == override_key || is_below(key, override_key)) {
+      at = {origin, 0, 0};
+      overridden = true;
+    }
+  if (overridden) return at;
+  std::vector<std::string> seen;
+  std::string below;
+  for (const auto& [override_key, origin] : m_overrides)
+    if (is_below(override_key, key) && std::find(seen.begin(), seen.end(), origin) == seen.end()) {
+      seen.push_back(origin);
+      below += (below.empty() ? "" : ", ") + origin;
+    }
+  if (below.empty()) return at;
+  if (at.line > 0) below += " (" + at.file + ":" + std::to_string(at.line) + ")";
+  return {below, 0, 0};
+}
+
 void Diagnostics::error(const toml::source_region& where, std::string key, std::string message) {
+  error(origin(where, key), key, std::move(message));
+}
+
+void Diagnostics::error(const Origin& where, std::string key, std::string message) {
   Diagnostic d;
-  d.file = where.path ? *where.path : std::string();
-  d.line = static_cast<int>(where.begin.line);
-  d.column = static_cast<int>(where.begin.column);
+  d.file = where.file;
+  d.line = where.line;
+  d.column = where.column;
   d.key = std::move(key);
   d.message = std::move(message);
-  // toml++ does not keep source positions on nodes inserted by an override.
-  for (const auto& [override_key, origin] : m_overrides)
-    if (d.key == override_key || d.key.rfind(override_key + ".", 0) == 0) {
-      d.file = origin;
-      d.line = d.column = 0;
-    }
   m_errors.push_back(std::move(d));
 }
 

@@ -9,6 +9,8 @@
 #include <utility>
 #include <vector>
 
+#include "src/deck/deck.hpp"
+
 namespace bagnold::deck {
 
 struct Diagnostic {
@@ -24,8 +26,14 @@ struct Diagnostic {
 class Diagnostics {
  public:
   void error(const toml::source_region& where, std::string key, std::string message);
-  // Errors on this key (or below it) without a source position point at the override.
+  void error(const Origin& where, std::string key, std::string message);
+  // Errors on this key (or below it) point at the override, whose value has no source position.
   void note_override(const std::string& key, const std::string& origin);
+  // Where an error on `key`, written at `where`, points: the last --set of the key or of a table
+  // above it; else, when --set changed keys below it (an error on a whole table, such as the
+  // closure refusing [solids]), those --set arguments with the table's line in parentheses;
+  // else `where`.
+  Origin origin(const toml::source_region& where, const std::string& key) const;
   bool ok() const { return m_errors.empty(); }
   const std::vector<Diagnostic>& errors() const { return m_errors; }
   std::string report() const;  // one line per error

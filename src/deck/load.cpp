@@ -1,6 +1,7 @@
 #include "src/deck/load.hpp"
 
 #include <fstream>
+#include <map>
 #include <set>
 #include <span>
 #include <sstream>
@@ -410,6 +411,36 @@ void check_closure_material(const toml::table* solids, const Deck& deck, Diagnos
   }
 }
 
+// Each [[initial]] region's ε_s at most the selected closure's packing limit φ_max for the
+// deck's material (SolidsStressModel::packing_limit: φ_c(μ) of App. A Table I for the kinetic
+// models and the rheologies, 1 − ε_g* for the plastic-pressure closures): a fill above it
+// starts compressed past jamming, where the closures cap or blow up. Only where the closure is
+// used (solids that move); 1e-12 absorbs the rounding of a limit written as 1 − ε_g*.
+void check_initial_packing(const toml::table& root, const Deck& deck, Diagnostics& diag) {
+  if (!deck.solids.enabled || !deck.solids.momentum || deck.initial.empty()) return;
+  const auto& choice = deck.models.solids_stress;
+  std::unique_ptr<models::SolidsStressModel> model;
+  try {
+    model = models::stress_registry().create(choice.name, choice.coefficients);
+  } catch (const std::exception&) {
+    return;  // an unknown closure or bad coefficients are reported where they are named
+  }
+  const double limit = model->packing_limit(deck.solids.material);
+  const auto* array = root.get_as<toml::array>("initial");
+  for (std::size_t i = 0; i < deck.initial.size(); ++i) {
+    const double fraction = deck.initial[i].solids_fraction;
+    if (!(fraction > limit + 1e-12)) continue;
+    const auto* table = array && i < array->size() ? (*array)[i].as_table() : nullptr;
+    const toml::node* node = table ? table->get("solids_fraction") : nullptr;
+    diag.error(node ? node->source() : table ? table->source() : root.source(),
+               "initial[" + std::to_string(i) + "].solids_fraction",
+               "value " + to_toml_text(fraction) + " is above the packing limit " +
+                   to_toml_text(limit) + " of the closure models.solids_stress.model = \"" +
+                   choice.name + "\" for the deck's [solids]: expected at most " +
+                   to_toml_text(limit) + " (docs/models.md gives each closure's limit)");
+  }
+}
+
 void read_material_and_models(const toml::table& root, Deck& deck, Diagnostics& diag) {
   const toml::table* solids = subtable(root, "solids", "solids", diag);
   read_section(solids, solids_section(), "solids", deck.solids.material, diag);
@@ -447,6 +478,7 @@ void read_all(const toml::table& root, Deck& deck, Diagnostics& diag) {
   read_material_and_models(root, deck, diag);
   check_solids_walls(root, deck, diag);
   deck.initial = read_array_of_tables(root, "initial", "initial", initial_section(), diag);
+  check_initial_packing(root, deck, diag);
   read_section(subtable(root, "numerics", "numerics", diag), numerics_section(), "numerics",
                deck.numerics, diag);
   read_section(subtable(root, "output", "output", diag), output_section(), "output", deck.output,
@@ -519,6 +551,25 @@ std::optional<toml::table> resolve_extends(toml::table deck, const std::string& 
   return resolved_base;
 }
 
+// Every table, array element and key of `table` into `out` under its dotted path, for the
+// checks made after loading (Deck::origins).
+void record_origins(const toml::table& table, const std::string& path, const Diagnostics& diag,
+                    std::map<std::string, Origin>& out) {
+  for (auto&& [k, node] : table) {
+    const std::string key = path.empty() ? std::string(k.str()) : path + "." + std::string(k.str());
+    out[key] = diag.origin(node.source(), key);
+    if (const auto* sub = node.as_table()) {
+      record_origins(*sub, key, diag, out);
+    } else if (const auto* array = node.as_array(); array && array->is_array_of_tables()) {
+      for (std::size_t i = 0; i < array->size(); ++i) {
+        const std::string element = key + "[" + std::to_string(i) + "]";
+        out[element] = diag.origin((*array)[i].source(), element);
+        record_origins(*(*array)[i].as_table(), element, diag, out);
+      }
+    }
+  }
+}
+
 enum class Scope { whole_deck, material_and_models };
 
 Deck load(const std::string& text, const std::string& source_name,
@@ -532,6 +583,7 @@ Deck load(const std::string& text, const std::string& source_name,
   deck.source = source_name;
   if (scope == Scope::whole_deck) {
     read_all(*root, deck, diag);
+    record_origins(*root, "", diag, deck.origins);
   } else {
     read_material_and_models(*root, deck, diag);
   }
@@ -651,6 +703,49 @@ std::vector<KeyInfo> coefficient_infos(const std::vector<models::CoefficientSpec
   return keys;
 }
 
+// How blocks and regions select cells (src/grid/cell_flags.hpp, src/run/initial_state.hpp) and
+// what check refuses of them (src/app/preflight.hpp), for the key reference.
+const char* const region_selection_markdown = R"(
+## How regions select cells
+
+Every block and region selects whole cells by their centres (walls are staircases at the grid
+scale); a box includes its faces.
+
+- `[[geometry.block]]` makes solid each domain cell whose centre lies inside its shape
+  (`blocks = "inside"`) or outside it (`blocks = "outside"`; for a cylinder or cone, around it
+  between its end planes). Blocked cells next to fluid become boundary cells; the others are not
+  stored.
+- `[[boundary]]` selects boundary cells: the layer of cells just outside each domain face that is
+  not periodic (one cell thick, edges and corners included), and the blocked cells next to fluid
+  (`face = "internal"`). A region takes the boundary cells of its `face` whose centres lie in its
+  box [`min`, `max`]. **The centres of a domain face's boundary cells lie half a cell beyond the
+  face** (at z = −Δz/2 below a floor at z = 0), so a box on a domain face must reach past the face:
+  `min = [0.0, 0.0, -1.0]`, `max = [0.01, 0.04, 0.0]` selects a 1 cm strip of such a floor, and
+  `min = [0.0, 0.0, 0.0]` none of it. A cell that several regions select belongs to the first one
+  listed (first wins); cells that no region selects belong to the implicit region `walls`
+  (`geometry.default_wall`).
+- `[[initial]]` sets the fluid cells whose centres lie in its box; a cell that several regions
+  select is set by the last one listed (later wins). Cells that no region selects start with no
+  solids and at rest.
+
+`bagnold check` prints each block's and region's cells and each initial region's solids mass
+(ρ_s ε_s V over the cells it sets, in kg), notes every pair of boundary regions and every pair of
+initial regions that select the same cells (with their number and which region gets them), and
+refuses, with exit code 2 and the line of the table or key:
+
+- a block that blocks no cell;
+- a boundary region that selects no cell, or all of whose cells belong to earlier regions;
+- an initial region that selects no cell;
+- an initial `solids_fraction` above the selected closure's packing limit for the deck's
+  material (docs/models.md, "Packing limit and wall g0"), where the solids move
+  (`solids.momentum = true`);
+- a grid whose estimated memory is more than the machine has, at the largest axis's `cells`
+  (docs/reliability.md, "Memory estimate").
+
+`bagnold run` refuses the same before anything runs. An error caused by a `--set` names the
+`--set` argument instead of the deck's line.
+)";
+
 template <class T>
 void reference_section(std::ostringstream& s, const Section<T>& section, const std::string& head) {
   reference_table(s, head + " — " + section.title, section.infos());
@@ -686,6 +781,7 @@ std::string key_reference_markdown() {
     reference_table(s, "`[models.drag." + entry.name + "]` — " + entry.summary,
                     coefficient_infos(entry.coefficients));
   reference_section(s, initial_section(), "`[[initial]]`");
+  s << region_selection_markdown;
   reference_section(s, numerics_section(), "`[numerics]`");
   reference_section(s, output_section(), "`[output]`");
   return s.str();

@@ -99,7 +99,7 @@ std::vector<std::string> block_shape_keys(const std::string& shape) {
 }
 
 const Section<BoundaryRegion>& boundary_section() {
-  static const Section<BoundaryRegion> s{"boundary", "Boundary regions ([[boundary]])", {
+  static const Section<BoundaryRegion> s{"boundary", "Boundary regions ([[boundary]], first wins)", {
       key(&BoundaryRegion::name, "name").required()
           .doc("Name used in the monitor columns (mass flux through the region)."),
       key(&BoundaryRegion::type, "type").required().one_of(boundary_types)
@@ -108,7 +108,8 @@ const Section<BoundaryRegion>& boundary_section() {
           .one_of({"x-", "x+", "y-", "y+", "z-", "z+", "internal", "any"})
           .doc("Domain face the region lies on, or internal (blocked cells inside the domain)."),
       key(&BoundaryRegion::min, "min").unit("m").init()
-          .doc("Lower corner of the box that selects boundary cells (by their centres)."),
+          .doc("Lower corner of the box that selects boundary cells by their centres, which on a "
+               "domain face lie half a cell beyond it (see \"How regions select cells\")."),
       key(&BoundaryRegion::max, "max").unit("m").init()
           .doc("Upper corner of the selecting box."),
       key(&BoundaryRegion::pressure, "pressure").unit("Pa").init().above(0.0)
@@ -205,11 +206,13 @@ const Section<ModelChoice>& drag_section() {
 const Section<InitialRegion>& initial_section() {
   static const Section<InitialRegion> s{"initial", "Initial state ([[initial]], later wins)", {
       key(&InitialRegion::min, "min").unit("m").init()
-          .doc("Lower corner of the box (cell centres inside are set)."),
+          .doc("Lower corner of the box (the fluid cells whose centres it contains are set; see "
+               "\"How regions select cells\")."),
       key(&InitialRegion::max, "max").unit("m").init()
           .doc("Upper corner of the box."),
       key(&InitialRegion::solids_fraction, "solids_fraction").unit("-").init()
-          .within(0.0, 1.0).doc("ε_s."),
+          .within(0.0, 1.0)
+          .doc("ε_s; at most the selected closure's packing limit where the solids move."),
       key(&InitialRegion::gas_velocity, "gas_velocity").unit("m/s").init()
           .doc("Gas velocity."),
       key(&InitialRegion::solids_velocity, "solids_velocity").unit("m/s").init()

@@ -19,6 +19,10 @@ bool on_face(const StructuredGrid& grid, const Index3& ijk, const std::string& f
 }
 }  // namespace
 
+bool region_selects(const StructuredGrid& grid, const Index3& ijk, const deck::BoundaryRegion& region) {
+  return on_face(grid, ijk, region.face) && inside_box(grid.centre(ijk), region.min, region.max);
+}
+
 BoundaryType boundary_type_from_name(const std::string& name) {
   for (int t = 0; t < 6; ++t)
     if (name == type_names[t]) return static_cast<BoundaryType>(t);
@@ -46,6 +50,7 @@ CellFlags classify_cells(const StructuredGrid& grid, const deck::Geometry& geome
   CellFlags flags;
   flags.kind.assign(static_cast<std::size_t>(n), CellKind::excluded);
   flags.region.assign(static_cast<std::size_t>(n), -1);
+  flags.block_cells.assign(geometry.blocks.size(), 0);
 
   // 1. Fluid: domain cells whose centre no primitive blocks.
   for (std::int64_t c = 0; c < n; ++c) {
@@ -53,7 +58,11 @@ CellFlags classify_cells(const StructuredGrid& grid, const deck::Geometry& geome
     if (!grid.in_domain(ijk)) continue;
     const auto x = grid.centre(ijk);
     bool blocked = false;
-    for (const auto& block : geometry.blocks) blocked = blocked || blocks_point(block, x);
+    for (std::size_t b = 0; b < geometry.blocks.size(); ++b)
+      if (blocks_point(geometry.blocks[b], x)) {
+        blocked = true;
+        ++flags.block_cells[b];
+      }
     if (!blocked) {
       flags.kind[static_cast<std::size_t>(c)] = CellKind::fluid;
       ++flags.fluid_count;
@@ -82,16 +91,13 @@ CellFlags classify_cells(const StructuredGrid& grid, const deck::Geometry& geome
     if (!touches_fluid) continue;
     flags.kind[static_cast<std::size_t>(c)] = CellKind::boundary;
     ++flags.boundary_count;
-    // 3. Region: the first [[boundary]] whose face and box contain the cell, else "walls".
-    const auto x = grid.centre(ijk);
+    // 3. Region: the first [[boundary]] that selects the cell, else "walls".
     int region = regions.default_region();
-    for (int r = 0; r < regions.default_region(); ++r) {
-      const auto& spec = regions.regions[static_cast<std::size_t>(r)];
-      if (on_face(grid, ijk, spec.face) && inside_box(x, spec.min, spec.max)) {
+    for (int r = 0; r < regions.default_region(); ++r)
+      if (region_selects(grid, ijk, regions.regions[static_cast<std::size_t>(r)])) {
         region = r;
         break;
       }
-    }
     flags.region[static_cast<std::size_t>(c)] = static_cast<std::int16_t>(region);
   }
   return flags;

@@ -41,10 +41,20 @@ struct CellFlags {
   std::vector<std::int16_t> region;  // boundary region of boundary cells, -1 otherwise
   std::int64_t fluid_count = 0;
   std::int64_t boundary_count = 0;
+  // Per [[geometry.block]]: the domain cells whose centre it blocks (also those another block
+  // blocks too). The same on every rank: each builds the flags of the whole box.
+  std::vector<std::int64_t> block_cells;
 };
 
+// Whether a [[boundary]] region selects the boundary cell at `ijk`: the cell lies on the
+// region's face (the ring cell outside it, for x- ... z+; inside the domain, for internal) and
+// its centre is in [min, max]. A ring cell's centre lies half a cell outside the domain face,
+// so a box that selects one on a domain face reaches past that face.
+bool region_selects(const StructuredGrid& grid, const Index3& ijk, const deck::BoundaryRegion& region);
+
 // Marks blocked cells from the deck's primitives, then the boundary skin: every non-fluid cell
-// with a fluid cell among its 26 neighbours (periodic directions wrap).
+// with a fluid cell among its 26 neighbours (periodic directions wrap). A boundary cell belongs
+// to the first [[boundary]] region that selects it, else to the implicit "walls".
 CellFlags classify_cells(const StructuredGrid& grid, const deck::Geometry& geometry,
                          const BoundaryRegions& regions);
 

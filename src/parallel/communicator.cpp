@@ -48,6 +48,11 @@ void Communicator::sum_in_place(double* values, std::size_t count) const {
   MPI_Allreduce(MPI_IN_PLACE, values, static_cast<int>(count), MPI_DOUBLE, MPI_SUM, m_comm);
 }
 
+void Communicator::sum_in_place(std::vector<std::int64_t>& values) const {
+  MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_INT64_T, MPI_SUM,
+                m_comm);
+}
+
 std::int64_t Communicator::exclusive_scan(std::int64_t x) const {
   std::int64_t out = 0;
   MPI_Exscan(&x, &out, 1, MPI_INT64_T, MPI_SUM, m_comm);
@@ -58,6 +63,14 @@ std::vector<std::int64_t> Communicator::all_gather(std::int64_t x) const {
   std::vector<std::int64_t> out(static_cast<std::size_t>(m_size));
   MPI_Allgather(&x, 1, MPI_INT64_T, out.data(), 1, MPI_INT64_T, m_comm);
   return out;
+}
+
+double Communicator::sum_on_node(double x) const {
+  MPI_Comm node = MPI_COMM_NULL;
+  MPI_Comm_split_type(m_comm, MPI_COMM_TYPE_SHARED, m_rank, MPI_INFO_NULL, &node);
+  const double sum = all_reduce(x, MPI_DOUBLE, MPI_SUM, node);
+  MPI_Comm_free(&node);
+  return sum;
 }
 
 void Communicator::barrier() const { MPI_Barrier(m_comm); }

@@ -33,9 +33,12 @@ class Communicator {
   // Elementwise sum over ranks, in place.
   void sum_in_place(std::vector<double>& values) const;
   void sum_in_place(double* values, std::size_t count) const;
+  void sum_in_place(std::vector<std::int64_t>& values) const;
   // Exclusive prefix sum of `x` over ranks (0 on rank 0).
   std::int64_t exclusive_scan(std::int64_t x) const;
   std::vector<std::int64_t> all_gather(std::int64_t x) const;
+  // Sum of `x` over the ranks on this rank's node (that share its memory).
+  double sum_on_node(double x) const;
   void barrier() const;
 
  private:

@@ -16,9 +16,6 @@ DomainSummary summarize(const Domain& domain) {
   s.max_local_cells = comm.max(std::int64_t{domain.layout.local_count()});
   const double mean = static_cast<double>(s.fluid_cells) / comm.size();
   s.imbalance = static_cast<double>(s.max_owned_fluid) / mean - 1.0;
-  s.region_cells.assign(domain.regions.regions.size(), 0);
-  for (std::size_t c = 0; c < domain.flags.kind.size(); ++c)
-    if (domain.flags.region[c] >= 0) ++s.region_cells[static_cast<std::size_t>(domain.flags.region[c])];
   return s;
 }
 
@@ -35,13 +32,6 @@ std::string summary_text(const Domain& domain, const DomainSummary& s, int field
                 100.0 * static_cast<double>(s.fluid_cells) / static_cast<double>(s.box_cells),
                 static_cast<long long>(s.boundary_cells));
   out += line;
-  for (std::size_t r = 0; r < domain.regions.regions.size(); ++r) {
-    std::snprintf(line, sizeof line, "boundary region %-16s %-16s %lld cells\n",
-                  domain.regions.regions[r].name.c_str(),
-                  grid::boundary_type_name(domain.regions.types[r]),
-                  static_cast<long long>(s.region_cells[r]));
-    out += line;
-  }
   const int ranks = domain.layout.comm().size();
   std::snprintf(line, sizeof line,
                 "partition: %d rank(s), fluid cells per rank %lld..%lld (imbalance %.2f %%)\n",

@@ -1,6 +1,7 @@
 #pragma once
-// What a domain holds, for `bagnold check` and the start of a run: cell counts, boundary regions,
-// the partition's balance and the memory the fields take. Collective; the text is for rank 0.
+// What a domain holds, for `bagnold check` and the start of a run: cell counts, the partition's
+// balance and the memory the fields take (each region's cells: src/run/region_census.hpp).
+// Collective; the text is for rank 0.
 
 #include <string>
 
@@ -15,7 +16,6 @@ struct DomainSummary {
   std::int64_t min_owned_fluid = 0, max_owned_fluid = 0;  // over ranks
   std::int64_t max_local_cells = 0;                       // owned + halo, largest rank
   double imbalance = 0.0;  // max owned fluid / mean − 1
-  std::vector<std::int64_t> region_cells;
 };
 
 DomainSummary summarize(const Domain& domain);

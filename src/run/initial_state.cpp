@@ -4,6 +4,11 @@
 
 namespace bagnold::run {
 
+bool initial_region_selects(const deck::InitialRegion& region, grid::CellKind kind,
+                            const std::array<double, 3>& centre) {
+  return kind == grid::CellKind::fluid && grid::inside_box(centre, region.min, region.max);
+}
+
 void set_initial_state(const deck::Deck& deck, const parallel::Domain& domain, FlowState& state) {
   const auto& layout = domain.layout;
   const auto& g = domain.grid;
@@ -18,8 +23,7 @@ void set_initial_state(const deck::Deck& deck, const parallel::Domain& domain, F
     const auto i = static_cast<std::size_t>(l);
     const auto x = g.centre(layout.index3(l));
     for (const auto& region : deck.initial) {
-      if (layout.kind(l) != grid::CellKind::fluid || !grid::inside_box(x, region.min, region.max))
-        continue;
+      if (!initial_region_selects(region, layout.kind(l), x)) continue;
       state.solids_fraction[i] = region.solids_fraction;
       for (std::size_t d = 0; d < 3; ++d) {
         state.gas_velocity[d][i] = region.gas_velocity[d];

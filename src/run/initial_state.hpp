@@ -8,6 +8,10 @@
 
 namespace bagnold::run {
 
+// Whether an [[initial]] region sets a cell: a fluid cell whose centre is in [min, max].
+bool initial_region_selects(const deck::InitialRegion& region, grid::CellKind kind,
+                            const std::array<double, 3>& centre);
+
 void set_initial_state(const deck::Deck& deck, const parallel::Domain& domain, FlowState& state);
 
 }  // namespace bagnold::run

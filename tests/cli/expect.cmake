@@ -1,11 +1,12 @@
 # Runs a command and checks what it did, for the command-line tests:
 #
-#   cmake [-DEXIT=n] [-DOUTPUT_1=regex ... -DOUTPUT_9=regex] [-DCLEAN=dir]
-#         [-DFILES=path,path,...] -P expect.cmake -- command args...
+#   cmake [-DEXIT=n] [-DOUTPUT_1=regex ... -DOUTPUT_9=regex] [-DNOT_OUTPUT=regex] [-DCLEAN=dir]
+#         [-DFILES=path,path,...] [-DABSENT=path] -P expect.cmake -- command args...
 #
 # EXIT: the exit code required (default 0). OUTPUT_i: regular expressions that stdout + stderr
-# must all match. CLEAN: a folder removed before the command runs, so FILES (each must exist and
-# be non-empty afterwards) cannot be left over from an earlier run.
+# must all match; NOT_OUTPUT one they must not. CLEAN: a folder removed before the command runs,
+# so FILES (each must exist and be non-empty afterwards) cannot be left over from an earlier run,
+# and ABSENT (which must not exist afterwards: nothing was written) was not there before it.
 set(command)
 set(after_separator FALSE)
 foreach(i RANGE 1 ${CMAKE_ARGC})
@@ -41,6 +42,12 @@ foreach(i RANGE 1 9)
     string(APPEND failures "the output does not match: ${OUTPUT_${i}}\n")
   endif()
 endforeach()
+if(DEFINED NOT_OUTPUT AND all MATCHES "${NOT_OUTPUT}")
+  string(APPEND failures "the output matches what it must not: ${NOT_OUTPUT}\n")
+endif()
+if(DEFINED ABSENT AND EXISTS "${ABSENT}")
+  string(APPEND failures "exists, but nothing should have been written: ${ABSENT}\n")
+endif()
 if(DEFINED FILES)
   string(REPLACE "," ";" files "${FILES}")
   foreach(f IN LISTS files)

@@ -283,6 +283,32 @@ TEST(DeckErrors, MfixDefaultWithoutPackedGasFractionNamesTheKey) {
   EXPECT_NO_THROW((void)deck::load_deck_text(with, "deck.toml", {}));
 }
 
+// An initial solids fraction above the selected closure's packing limit is refused at the key:
+// MKT at μ = 0.3 jams at φ_c = 0.596 (App. A Table I), the plastic closure at 1 − ε_g*. At the
+// limit is accepted, and so is any fraction where the closure is not used (frozen solids).
+TEST(DeckErrors, InitialFractionAbovePackingLimitNamesTheKey) {
+  const std::string fill = "[solids]\nfriction = 0.3\n[[initial]]\nsolids_fraction = 0.5\n"
+                           "[[initial]]\nsolids_fraction = 0.6\n";
+  const std::string text = deck_text(fill);
+  const auto errors = errors_of(text);
+  ASSERT_EQ(errors.size(), 1u) << report_of(errors);
+  const auto e = error_on(errors, "initial[1].solids_fraction");
+  EXPECT_EQ(e.line, line_of(text, "solids_fraction = 0.6"));
+  EXPECT_TRUE(contains(e.message, "above the packing limit 0.596 of the closure "
+                                  "models.solids_stress.model = \"mkt\"")) << e.message;
+  EXPECT_NO_THROW((void)deck::load_deck_text(
+      deck_text("[solids]\nfriction = 0.3\n[[initial]]\nsolids_fraction = 0.596\n"), "deck.toml"));
+  const std::string plastic = "[models.solids_stress]\nmodel = \"plastic\"\n"
+                              "[models.solids_stress.plastic]\npacked_gas_fraction = 0.45\n";
+  EXPECT_NO_THROW((void)deck::load_deck_text(
+      deck_text(plastic + "[[initial]]\nsolids_fraction = 0.55\n"), "deck.toml"));
+  const auto over = error_on(errors_of(deck_text(plastic + "[[initial]]\nsolids_fraction = 0.56\n")),
+                             "initial[0].solids_fraction");
+  EXPECT_TRUE(contains(over.message, "packing limit 0.55 ")) << over.message;
+  EXPECT_NO_THROW((void)deck::load_deck_text(
+      deck_text("[solids]\nmomentum = false\n[[initial]]\nsolids_fraction = 0.7\n"), "deck.toml"));
+}
+
 // A value of the wrong type is echoed in the message, as the deck wrote it.
 TEST(DeckErrors, WrongTypeEchoesTheValue) {
   const std::string text = deck_text("[solids]\ndiameter = \"big\"\n");

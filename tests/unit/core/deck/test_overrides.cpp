@@ -164,5 +164,35 @@ TEST(DeckOverride, SeveralBadOverridesAreAllReported) {
   EXPECT_EQ(error_on(errors, "gas.density").file, "--set gas.density=0");
 }
 
+// An error on a whole table that --set changed (the closure refusing the [solids] material)
+// points at those --set arguments, with the table's line in parentheses; without an override
+// it keeps the table's line.
+TEST(DeckOverride, TableErrorPointsAtTheOverridesBelowIt) {
+  const std::string text = deck_text("[solids]\nrestitution = 0.8\n");
+  const auto errors = errors_of(text, {"solids.restitution=1.0", "run.end_time=2"});
+  const auto e = error_on(errors, "solids");
+  EXPECT_EQ(e.file, "--set solids.restitution=1.0 (deck.toml:" +
+                        std::to_string(line_of(text, "[solids]")) + ")");
+  EXPECT_EQ(e.line, 0);
+  EXPECT_EQ(e.to_string().rfind("--set solids.restitution=1.0 (deck.toml:", 0), 0u) << e.to_string();
+  const std::string in_deck = deck_text("[solids]\nrestitution = 1.0\n");
+  const auto own = error_on(errors_of(in_deck, {"run.end_time=2"}), "solids");
+  EXPECT_EQ(own.file, "deck.toml");
+  EXPECT_EQ(own.line, line_of(in_deck, "[solids]"));
+}
+
+// The deck records where each table, array element and key was written, for the checks made
+// after loading (a region without cells, a grid too large); an overridden key's is its --set.
+TEST(DeckOverride, OriginsOfTablesElementsAndKeys) {
+  const auto d = load_with({"grid.z.cells=8"});
+  EXPECT_EQ(d.origin_of("boundary[1]").file, "deck.toml");
+  EXPECT_EQ(d.origin_of("boundary[1]").line, line_of(with_boundaries, "[[boundary]]\nname = \"top\""));
+  EXPECT_EQ(d.origin_of("grid.x.cells").line, line_of(with_boundaries, "cells = 4"));
+  EXPECT_EQ(d.origin_of("grid.z.cells").file, "--set grid.z.cells=8");
+  EXPECT_EQ(d.origin_of("grid.z.cells").line, 0);
+  EXPECT_EQ(d.origin_of("no.such.key").file, "deck.toml");  // the deck, without a line
+  EXPECT_EQ(d.origin_of("no.such.key").line, 0);
+}
+
 }  // namespace
 }  // namespace bagnold::tests

@@ -279,6 +279,46 @@ TEST(CellFlags, RegionsByFaceAndBoxFirstMatchWinsRestAreWalls) {
   EXPECT_EQ(per_region[walls], (6 * 4 - 4 * 2) * 2);      // the ring around k = 0, 1
 }
 
+// Each block's count is the domain cells whose centre it blocks, also where another block
+// blocks them too; a block beside the domain blocks none.
+TEST(CellFlags, EachBlockCountsTheCellsItBlocks) {
+  const Classified c(box_deck(4, 4, 4,
+                              "[[geometry.block]]\nshape = \"box\"\nmin = [0.0, 0.0, 0.0]\n"
+                              "max = [0.02, 0.04, 0.01]\n"  // i = 0, 1; all j; k = 0: 8 cells
+                              "[[geometry.block]]\nshape = \"half_space\"\npoint = [0.0, 0.0, 0.004]\n"
+                              "normal = [0.0, 0.0, -1.0]\n"  // z < 0.004: none (centres 0.005 ...)
+                              "[[geometry.block]]\nshape = \"box\"\nmin = [0.0, 0.0, 0.0]\n"
+                              "max = [0.04, 0.04, 0.01]\n"  // all of k = 0: 16, 8 shared
+                              "[[geometry.block]]\nshape = \"box\"\nmin = [0.05, 0.0, 0.0]\n"
+                              "max = [0.08, 0.04, 0.04]\n"));  // beside the domain: none
+  EXPECT_EQ(c.flags.block_cells, (std::vector<std::int64_t>{8, 0, 16, 0}));
+  EXPECT_EQ(c.flags.fluid_count, 64 - 16);
+}
+
+// A region selects the boundary cells of its face whose centres are in its box: on a domain
+// face those centres lie half a cell beyond the face, so a box ending on the face selects none.
+TEST(CellFlags, RegionSelectsByFaceAndCentre) {
+  const Classified c(box_deck(4, 4, 4));
+  deck::BoundaryRegion on_face;
+  on_face.face = "z-";
+  on_face.min = {0.0, 0.0, 0.0};
+  on_face.max = {0.01, 0.04, 0.0};
+  deck::BoundaryRegion past_face = on_face;
+  past_face.min[2] = -1.0;
+  int on = 0, past = 0;
+  for (grid::Natural n = 0; n < c.grid.extended_cell_count(); ++n) {
+    const auto ijk = c.grid.index3(n);
+    if (c.kind(ijk) != CellKind::boundary) continue;
+    on += grid::region_selects(c.grid, ijk, on_face);
+    past += grid::region_selects(c.grid, ijk, past_face);
+  }
+  EXPECT_EQ(on, 0);
+  EXPECT_EQ(past, 4);  // i = 0 (x centre 0.005) by j = 0 .. 3 (y centres 0.005 ... 0.035)
+  EXPECT_TRUE(grid::region_selects(c.grid, {0, 3, -1}, past_face));
+  EXPECT_FALSE(grid::region_selects(c.grid, {0, 0, 4}, past_face));  // another face
+  EXPECT_FALSE(grid::region_selects(c.grid, {1, 0, -1}, past_face));  // x centre 0.015
+}
+
 TEST(CellFlags, InternalRegionTakesOnlyBlockedCellsInsideTheDomain) {
   const Classified c(box_deck(6, 6, 6,
                               "[[geometry.block]]\nshape = \"box\"\nmin = [0.02, 0.02, 0.02]\n"

@@ -3,22 +3,17 @@
 // Run on 1 and 2 ranks: every stored cell, owned or halo, gets the same values.
 #include <gtest/gtest.h>
 
-#include "src/deck/load.hpp"
-#include "src/parallel/domain.hpp"
 #include "src/run/initial_state.hpp"
+#include "tests/support/deck_domain.hpp"
 #include "tests/support/test_decks.hpp"
 
 namespace bagnold::tests {
 namespace {
 
-struct Initialized {
-  deck::Deck deck;
-  parallel::Domain domain;
+struct Initialized : DeckAndDomain {
   run::FlowState state;
   explicit Initialized(const std::string& text)
-      : deck(deck::load_deck_text(text, "t.toml")),
-        domain(deck, parallel::Communicator()),
-        state(domain.layout.local_count()) {
+      : DeckAndDomain(text), state(domain.layout.local_count()) {
     run::set_initial_state(deck, domain, state);
   }
 };

@@ -5,6 +5,7 @@
 #include "src/app/commands.hpp"
 #include "src/app/exit_codes.hpp"
 #include "src/parallel/communicator.hpp"
+#include "src/util/build_info.hpp"
 #include "src/util/closest_match.hpp"
 
 #include <algorithm>
@@ -16,7 +17,7 @@ int main(int argc, char** argv) {
 
   CLI::App cli{"Bagnold: two-fluid (Euler-Euler) gas-solid flow solver for dense granular flows"};
   cli.require_subcommand(1);
-  cli.set_version_flag("--version", "bagnold 0.1.0");
+  cli.set_version_flag("--version", "bagnold " + bagnold::version() + " (git " + bagnold::git_hash() + ")");
 
   DeckArguments deck_args;
   auto add_deck_options = [&](CLI::App* sub) {

@@ -77,7 +77,7 @@ std::string OutputWriter::write_diagnostic(const FlowState& state, double time, 
                                            double dt) {
   const std::string path = (fs::path(m_directory) / "diagnostic.h5").string();
   io::write_snapshot(path, m_domain.layout, m_domain.flags, state.views(),
-                     {time, step, dt, m_title + " (diagnostic: a step that failed)", dt, {}});
+                     {time, step, dt, m_title + " (diagnostic: a step that failed)", dt, {}, {}});
   return path;
 }
 
@@ -119,7 +119,7 @@ std::string OutputWriter::write(const FlowState& state, double time, long step, 
   const std::string name = snapshot_name(m_next_number++);
   const std::string path = (fs::path(m_directory) / name).string();
   io::write_snapshot(path, m_domain.layout, m_domain.flags, state.views(),
-                     {time, step, dt, m_title, dt_next, time_step_memory});
+                     {time, step, dt, m_title, dt_next, time_step_memory, {}});
   m_index.push_back({name, time, {}});
   if (m_domain.layout.comm().is_root())
     io::write_file_atomically((fs::path(m_directory) / "run.xmf").string(),

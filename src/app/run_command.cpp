@@ -17,6 +17,7 @@
 #include "src/run/initial_state.hpp"
 #include "src/run/monitor_columns.hpp"
 #include "src/run/output_writer.hpp"
+#include "src/run/run_directory.hpp"
 
 namespace bagnold::app {
 

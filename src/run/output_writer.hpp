@@ -1,7 +1,8 @@
 #pragma once
 // Where a run's output goes: the output directory (created, checked writable at start), the
 // numbered HDF5 snapshots (snapshot_000000.h5, ...), the XDMF index run.xmf that ParaView opens,
-// and the decision of when the next snapshot is due.
+// and the decision of when the next snapshot is due. Which files are the run's, and how they
+// are found and replaced: run_directory.hpp.
 
 #include <string>
 #include <vector>
@@ -13,13 +14,12 @@
 
 namespace bagnold::run {
 
-// The snapshot a --restart argument names: the file itself, or a run directory's last snapshot.
-std::string find_snapshot(const std::string& file_or_directory);
-
 class OutputWriter {
  public:
   // Collective. Throws io::Hdf5Error with the directory's name if it cannot be created or written.
-  OutputWriter(const deck::Deck& deck, const parallel::Domain& domain);
+  // `record`: the run's provenance and deck (run/provenance.hpp), on every snapshot's root.
+  OutputWriter(const deck::Deck& deck, const parallel::Domain& domain,
+               std::vector<io::RecordAttribute> record = {});
 
   double next_snapshot_time() const { return m_next_time; }
   bool snapshot_due(double time) const { return time >= m_next_time - 1e-12 * (1.0 + time); }
@@ -39,6 +39,7 @@ class OutputWriter {
   const parallel::Domain& m_domain;
   std::string m_directory;
   std::string m_title;
+  std::vector<io::RecordAttribute> m_record;
   double m_interval;
   double m_next_time = 0.0;
   std::vector<io::IndexedSnapshot> m_index;

@@ -268,6 +268,21 @@ const char* centering_name(Centering c) {
   return "cell";
 }
 
+std::uintmax_t snapshot_size_estimate(const parallel::Layout& layout, const grid::CellFlags& flags,
+                                      std::size_t field_count, const SnapshotInfo& info) {
+  const auto& g = layout.grid();
+  const auto cells = static_cast<std::uintmax_t>(g.domain_cell_count());
+  const auto boundary = static_cast<std::uintmax_t>(std::max<std::int64_t>(flags.boundary_count, 1));
+  const std::uintmax_t faces = static_cast<std::uintmax_t>(g.cells(0) + g.cells(1) + g.cells(2) + 3);
+  std::uintmax_t attributes = 8 * info.time_step_memory.size() + info.title.size() + 512;
+  for (const auto& r : info.record)
+    attributes += r.name.size() + 32 +
+                  (std::holds_alternative<std::string>(r.value) ? std::get<std::string>(r.value).size() : 8);
+  const std::uintmax_t datasets = 2 * field_count + 5;  // fields, their boundary values, grid
+  return field_count * (cells + boundary) * 8 + cells + boundary * 8 + faces * 8 + attributes +
+         2048 * datasets + 4096;
+}
+
 void write_snapshot(const std::string& path, const parallel::Layout& layout,
                     const grid::CellFlags& flags, const std::vector<FieldView>& fields,
                     const SnapshotInfo& info) {

@@ -15,6 +15,7 @@
 // The file is written as NAME.tmp and renamed when complete, so a crash never leaves a torn
 // snapshot under its final name.
 
+#include <cstdint>
 #include <optional>
 #include <span>
 #include <string>
@@ -64,6 +65,12 @@ SnapshotHeader read_snapshot_header(const std::string& path, const std::vector<s
 // A string attribute of the snapshot's root (rank-local, serial read); nothing when the snapshot
 // has no such attribute (written before it existed). Throws when the file is unreadable.
 std::optional<std::string> read_text_attribute(const std::string& path, const std::string& name);
+
+// About how many bytes write_snapshot writes for `field_count` fields, from above: the arrays,
+// the grid, the attributes, and 2 KiB of HDF5 metadata per dataset (its metadata block; measured
+// 0.7-1.5 KiB). For checking that the disk has room before writing (run/output_writer.hpp).
+std::uintmax_t snapshot_size_estimate(const parallel::Layout& layout, const grid::CellFlags& flags,
+                                      std::size_t field_count, const SnapshotInfo& info);
 
 // Collective: every rank calls with the same field names in the same order.
 void write_snapshot(const std::string& path, const parallel::Layout& layout,

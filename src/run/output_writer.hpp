@@ -36,6 +36,15 @@ class OutputWriter {
   const std::string& directory() const { return m_directory; }
 
  private:
+  // Collective, before a snapshot is written to `path`: throws io::Hdf5Error on every rank when
+  // rank 0 finds less free space on the directory's disk than the snapshot needs (8 KiB more than
+  // the largest written so far, or io::snapshot_size_estimate). A parallel HDF5 (1.10) file whose writes
+  // failed on a full disk cannot be closed, and the program would crash on exit instead of
+  // stopping with this message (docs/reliability.md, "Disk full").
+  void check_room(const std::string& path, const io::SnapshotInfo& info) const;
+  // Rank 0 notes the size of the snapshot just written.
+  void note_size(const std::string& path);
+
   const parallel::Domain& m_domain;
   std::string m_directory;
   std::string m_title;
@@ -44,6 +53,7 @@ class OutputWriter {
   double m_next_time = 0.0;
   std::vector<io::IndexedSnapshot> m_index;
   std::size_t m_next_number = 0;  // of the next snapshot file
+  std::uintmax_t m_largest = 0;   // [bytes] of the snapshots this writer wrote (rank 0)
 };
 
 }  // namespace bagnold::run

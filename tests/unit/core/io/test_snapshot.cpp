@@ -130,6 +130,18 @@ TEST(Snapshot, RecordAttributesAreUtf8StringsOrIntegers) {
   H5Fclose(file);
 }
 
+// The estimate the writer checks the free disk space against covers the file, without asking for
+// much more than it takes (the hopper: 2 fields, a 3 kB deck in the record).
+TEST(Snapshot, SizeEstimateCoversTheFile) {
+  const std::string path = file_name("snapshot_size");
+  Written w(path);
+  io::SnapshotInfo info{0.25, 12, 1e-3, "test", 2e-3, {1e-3, 8000.0, 11.0}, Written::record};
+  const auto estimate = io::snapshot_size_estimate(w.domain.layout, w.domain.flags, 2, info);
+  const auto size = std::filesystem::file_size(path);
+  EXPECT_GE(estimate, size);
+  EXPECT_LE(estimate, 2 * size);
+}
+
 TEST(Snapshot, ReadOntoAnotherRankCountFromASerialFile) {
   // Written on one rank (rank 0 alone, with its own communicator), read on all ranks.
   const std::string path = file_name("snapshot_serial_source");

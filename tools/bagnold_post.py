@@ -216,8 +216,9 @@ def solids_mass_balance(columns):
 
 
 def run_bagnold(bagnold, deck, ranks, sets):
-    """`mpirun -np RANKS BAGNOLD run DECK --set ...` (root allowed), output captured."""
-    command = ["mpirun", "--oversubscribe", "-np", str(ranks), bagnold, "run", deck]
+    """`mpirun -np RANKS BAGNOLD run DECK --overwrite --set ...` (root allowed), output captured.
+    The tools run each case fresh into a directory of its own, so a rerun replaces it (--keep)."""
+    command = ["mpirun", "--oversubscribe", "-np", str(ranks), bagnold, "run", deck, "--overwrite"]
     for s in sets:
         command += ["--set", s]
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")

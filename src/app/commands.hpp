@@ -11,6 +11,9 @@ struct DeckArguments {
   std::vector<std::string> overrides;  // --set key=value
   std::string petsc_options;           // --petsc-options "-log_view ..."
   std::string restart;                 // --restart SNAPSHOT_OR_RUN_DIR
+  bool force = false;                  // --force: restart with a deck other than the snapshot's
+  bool overwrite = false;              // --overwrite: replace the run in the output directory
+  std::vector<std::string> command_line;  // argv, for the run's provenance
 };
 
 struct RheometerArguments {

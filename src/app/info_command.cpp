@@ -10,10 +10,8 @@
 #include "src/app/commands.hpp"
 #include "src/app/exit_codes.hpp"
 #include "src/deck/load.hpp"
+#include "src/util/build_info.hpp"
 
-#ifndef BAGNOLD_GIT_REVISION
-#define BAGNOLD_GIT_REVISION "unknown"
-#endif
 #ifndef BAGNOLD_BUILD_TYPE
 #define BAGNOLD_BUILD_TYPE "unknown"
 #endif
@@ -35,7 +33,7 @@ int info_command() {
   H5get_libversion(&h5_major, &h5_minor, &h5_release);
 
   std::string text;
-  text += "bagnold 0.1.0 (git " BAGNOLD_GIT_REVISION ", " BAGNOLD_BUILD_TYPE " build, " __VERSION__
+  text += "bagnold " + version() + " (git " + git_hash() + ", " BAGNOLD_BUILD_TYPE " build, " __VERSION__
           ")\n";
   text += "MPI: " + mpi + ", " + std::to_string(ranks) + " rank(s) in this run\n";
   text += "PETSc: " BAGNOLD_PETSC_VERSION "\n";

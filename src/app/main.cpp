@@ -5,6 +5,7 @@
 #include "src/app/commands.hpp"
 #include "src/app/exit_codes.hpp"
 #include "src/parallel/communicator.hpp"
+#include "src/util/build_info.hpp"
 #include "src/util/closest_match.hpp"
 
 #include <algorithm>
@@ -16,7 +17,7 @@ int main(int argc, char** argv) {
 
   CLI::App cli{"Bagnold: two-fluid (Euler-Euler) gas-solid flow solver for dense granular flows"};
   cli.require_subcommand(1);
-  cli.set_version_flag("--version", "bagnold 0.1.0");
+  cli.set_version_flag("--version", "bagnold " + bagnold::version() + " (git " + bagnold::git_hash() + ")");
 
   DeckArguments deck_args;
   auto add_deck_options = [&](CLI::App* sub) {
@@ -27,8 +28,17 @@ int main(int argc, char** argv) {
   };
   auto* run = cli.add_subcommand("run", "Run the simulation a deck describes");
   add_deck_options(run);
-  run->add_option("--restart", deck_args.restart,
-                  "Continue from a snapshot (or the last snapshot of a run directory)");
+  auto* restart = run->add_option(
+      "--restart", deck_args.restart,
+      "Continue from a snapshot (or the last snapshot of a run directory), writing into its run "
+      "directory unless --set output.directory is given; the deck must be the snapshot's except "
+      "for [run] and [output]");
+  run->add_flag("--force", deck_args.force,
+                "With --restart: continue even though the deck differs from the snapshot's")
+      ->needs(restart);
+  run->add_flag("--overwrite", deck_args.overwrite,
+                "Replace the run the output directory holds (its snapshots, run.xmf, monitor.csv, "
+                "run.toml, provenance.toml, diagnostic.h5) instead of refusing");
   run->add_option("--petsc-options", deck_args.petsc_options,
                   "PETSc options, e.g. \"-log_view -pressure_ksp_monitor\"");
   auto* check = cli.add_subcommand(
@@ -85,6 +95,7 @@ int main(int argc, char** argv) {
     const int code = rank == 0 ? cli.exit(e) : (e.get_exit_code() == 0 ? 0 : 1);
     return code == 0 ? success : bad_input;
   }
+  deck_args.command_line.assign(argv, argv + argc);
   if (run->parsed()) return run_command(deck_args);
   if (check->parsed()) return check_command(deck_args);
   if (info->parsed()) return info_command();

@@ -1,5 +1,7 @@
-// bagnold run DECK: set up the domain and the initial state, write it, and advance to
-// run.end_time with the two-fluid solver (gas alone, gas and solids, or solids in vacuum).
+// bagnold run DECK: choose and claim the output directory (output_directory.hpp), set up the
+// domain and the initial state (or a restart's), record the run (run.toml, provenance.toml and
+// every snapshot's attributes), write the initial state, and advance to run.end_time with the
+// two-fluid solver (gas alone, gas and solids, or solids in vacuum).
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -10,13 +12,17 @@
 #include "src/run/stop_request.hpp"
 #include "src/app/commands.hpp"
 #include "src/app/exit_codes.hpp"
+#include "src/app/output_directory.hpp"
 #include "src/app/preflight.hpp"
+#include "src/app/run_banner.hpp"
 #include "src/app/time_loop.hpp"
 #include "src/deck/load.hpp"
 #include "src/io/monitor.hpp"
 #include "src/run/initial_state.hpp"
 #include "src/run/monitor_columns.hpp"
 #include "src/run/output_writer.hpp"
+#include "src/run/provenance.hpp"
+#include "src/run/run_directory.hpp"
 
 namespace bagnold::app {
 
@@ -30,13 +36,13 @@ struct StartPoint {
   std::vector<double> time_step_memory;  // the time-step controller's, from the snapshot
 };
 
-// Reads every field of the snapshot into `state` (any number of ranks); throws io::Hdf5Error
+// Reads every field of `snapshot` into `state` (any number of ranks); throws io::Hdf5Error
 // when the snapshot does not fit this deck's grid or geometry. Snapshots written before
 // pressure_shear_rate existed restart with it unset (the closure starts it at the current rate).
-StartPoint restore_state(const std::string& file_or_directory, const parallel::Domain& domain,
+StartPoint restore_state(const std::string& snapshot, const parallel::Domain& domain,
                          run::FlowState& state) {
   StartPoint start;
-  start.snapshot = run::find_snapshot(file_or_directory);
+  start.snapshot = snapshot;
   std::vector<std::vector<double>> fields;
   const auto contents =
       io::read_snapshot(start.snapshot, domain.layout, run::FlowState::field_names(), fields,
@@ -62,9 +68,26 @@ int run_command(const DeckArguments& args) {
     return bad_input;
   }
   const parallel::Communicator comm;
+  // Where the run writes, and whether it may (output_directory.hpp).
+  std::string snapshot;
+  if (!args.restart.empty()) {
+    try {
+      snapshot = run::find_snapshot(args.restart);
+    } catch (const std::exception& e) {  // io::Hdf5Error, or the file system's
+      say(std::string("bagnold run: cannot restart: ") + e.what(), true);
+      return bad_input;
+    }
+    if (const int code = continue_run_directory(args, snapshot, deck, comm); code != success)
+      return code;
+  }
+  const auto claim = claim_output_directory(args, snapshot, deck, comm);
+  if (claim.code != success) return claim.code;
   try {
     const auto prepared = preflight(deck, comm);
-    say("bagnold run: " + args.deck + "\n" + prepared.text);
+    const auto provenance =
+        run::describe_run(args.command_line, comm.size(), args.petsc_options, snapshot);
+    say("bagnold run: " + args.deck + "\n" + prepared.text +
+        (prepared.errors.ok() ? run_banner(deck, prepared.domain->regions, provenance) : std::string()));
     if (!prepared.errors.ok()) {
       say(prepared.errors.report() + "bagnold run: " + args.deck + " is not valid; nothing was run",
           true);
@@ -74,9 +97,9 @@ int run_command(const DeckArguments& args) {
     run::FlowState state(domain.layout.local_count());
     run::set_initial_state(deck, domain, state);
     StartPoint start{0.0, 0, deck.run.dt_initial, "", {}};
-    if (!args.restart.empty()) {
+    if (!snapshot.empty()) {
       try {
-        start = restore_state(args.restart, domain, state);
+        start = restore_state(snapshot, domain, state);
       } catch (const io::Hdf5Error& e) {
         say(std::string("bagnold run: cannot restart: ") + e.what(), true);
         return bad_input;
@@ -91,7 +114,8 @@ int run_command(const DeckArguments& args) {
                         "[{:.3g}, {:.3g}] s; the first step takes {:.3g} s",
                         snapshot_dt, deck.run.dt_min, deck.run.dt_max, start.dt));
     }
-    run::OutputWriter output(deck, domain);
+    if (claim.replace) remove_earlier_run(deck, comm);
+    run::OutputWriter output(deck, domain, run::snapshot_record(provenance, deck::resolved_text(deck)));
     if (!start.snapshot.empty()) {
       try {
         output.resume(start.time);
@@ -100,6 +124,7 @@ int run_command(const DeckArguments& args) {
         return bad_input;
       }
     }
+    record_run(deck, provenance, comm);
     io::Monitor monitor(output.directory() + "/monitor.csv", monitor_columns(domain),
                         comm.is_root(), start.snapshot.empty() ? nullptr : &start.time);
     solver::PetscSession petsc(nullptr, nullptr);

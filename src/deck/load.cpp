@@ -619,6 +619,13 @@ Deck load_deck(const std::string& path, const std::vector<std::string>& override
   return load(read_file(path), path, overrides, Scope::whole_deck);
 }
 
+bool overrides_key(const std::vector<std::string>& overrides, const std::string& key) {
+  for (const auto& o : overrides)
+    if (const auto equals = o.find('='); equals != std::string::npos && trimmed(o.substr(0, equals)) == key)
+      return true;
+  return false;
+}
+
 Deck load_deck_text(const std::string& text, const std::string& source_name,
                     const std::vector<std::string>& overrides) {
   return load(text, source_name, overrides, Scope::whole_deck);

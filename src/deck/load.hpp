@@ -14,6 +14,9 @@ namespace bagnold::deck {
 // "boundary[1].type=..."). Throws DeckError listing every problem found.
 Deck load_deck(const std::string& path, const std::vector<std::string>& overrides = {});
 
+// Whether one of `overrides` sets `key` ("output.directory"), spaces around it ignored.
+bool overrides_key(const std::vector<std::string>& overrides, const std::string& key);
+
 // Same, from TOML text (tests, and the rheometer's --set-only material).
 Deck load_deck_text(const std::string& text, const std::string& source_name,
                     const std::vector<std::string>& overrides = {});

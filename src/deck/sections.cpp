@@ -312,7 +312,9 @@ const Section<Numerics>& numerics_section() {
 const Section<Output>& output_section() {
   static const Section<Output> s{"output", "Output", {
       key(&Output::directory, "directory").required()
-          .doc("Where snapshots, the XDMF index and the monitor go (created if missing)."),
+          .doc("Where snapshots, the XDMF index, the monitor, run.toml and provenance.toml go "
+               "(created if missing); a fresh run refuses one that holds a run unless --overwrite. "
+               "A restart writes into its snapshot's directory unless --set gives this key."),
       key(&Output::snapshot_interval, "snapshot_interval").unit("s").init().above(0.0)
           .doc("Simulated time between HDF5 snapshots. Each is written at the end of the first step that "
                "reaches its scheduled time, at that step's time: steps are not shortened for "

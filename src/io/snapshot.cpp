@@ -6,13 +6,13 @@
 #include <limits>
 
 #include "src/io/hdf5_handle.hpp"
+#include "src/util/build_info.hpp"
 
 namespace bagnold::io {
 
 namespace {
 
 constexpr int format_version = 1;
-constexpr const char* bagnold_version = "0.1.0";
 
 File open_parallel(const std::string& path, MPI_Comm comm, bool create) {
   // Errors are reported by exceptions with a message; HDF5's own stack dump would only add noise.
@@ -45,6 +45,18 @@ void write_attribute(hid_t object, const char* name, const std::string& value) {
   Attribute a(check(H5Acreate2(object, name, type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
                     "H5Acreate"));
   check_status(H5Awrite(a.get(), type.get(), value.empty() ? " " : value.c_str()), "H5Awrite");
+}
+
+// A variable-length UTF-8 string (h5py reads it as str), the form of every newer text attribute.
+void write_utf8_attribute(hid_t object, const char* name, const std::string& value) {
+  Datatype type(check(H5Tcopy(H5T_C_S1), "H5Tcopy"));
+  check_status(H5Tset_size(type.get(), H5T_VARIABLE), "H5Tset_size");
+  check_status(H5Tset_cset(type.get(), H5T_CSET_UTF8), "H5Tset_cset");
+  Dataspace space(check(H5Screate(H5S_SCALAR), "H5Screate"));
+  Attribute a(check(H5Acreate2(object, name, type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
+                    "H5Acreate"));
+  const char* text = value.c_str();
+  check_status(H5Awrite(a.get(), type.get(), &text), "H5Awrite");
 }
 
 void write_attribute(hid_t object, const char* name, const std::vector<double>& values) {
@@ -219,6 +231,33 @@ SnapshotHeader read_snapshot_header(const std::string& path, const std::vector<s
   return header;
 }
 
+std::optional<std::string> read_text_attribute(const std::string& path, const std::string& name) {
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  File file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT));
+  if (file.get() < 0) throw Hdf5Error("cannot open snapshot " + path);
+  if (H5Aexists(file.get(), name.c_str()) <= 0) return std::nullopt;
+  Attribute a(check(H5Aopen(file.get(), name.c_str(), H5P_DEFAULT), name.c_str()));
+  Datatype stored(check(H5Aget_type(a.get()), "H5Aget_type"));
+  if (H5Tget_class(stored.get()) != H5T_STRING)
+    throw Hdf5Error("snapshot " + path + ": attribute '" + name + "' is not a string");
+  Datatype type(check(H5Tcopy(H5T_C_S1), "H5Tcopy"));
+  if (H5Tis_variable_str(stored.get()) > 0) {
+    check_status(H5Tset_size(type.get(), H5T_VARIABLE), "H5Tset_size");
+    check_status(H5Tset_cset(type.get(), H5Tget_cset(stored.get())), "H5Tset_cset");
+    char* text = nullptr;
+    check_status(H5Aread(a.get(), type.get(), &text), "H5Aread");
+    std::string value = text ? text : "";
+    H5free_memory(text);  // HDF5 allocated it
+    return value;
+  }
+  const std::size_t size = H5Tget_size(stored.get());
+  check_status(H5Tset_size(type.get(), size + 1), "H5Tset_size");
+  std::string value(size + 1, '\0');
+  check_status(H5Aread(a.get(), type.get(), value.data()), "H5Aread");
+  value.resize(value.find('\0') == std::string::npos ? size : value.find('\0'));
+  return value;
+}
+
 const char* centering_name(Centering c) {
   switch (c) {
     case Centering::cell: return "cell";
@@ -227,6 +266,21 @@ const char* centering_name(Centering c) {
     case Centering::z_face: return "z_face";
   }
   return "cell";
+}
+
+std::uintmax_t snapshot_size_estimate(const parallel::Layout& layout, const grid::CellFlags& flags,
+                                      std::size_t field_count, const SnapshotInfo& info) {
+  const auto& g = layout.grid();
+  const auto cells = static_cast<std::uintmax_t>(g.domain_cell_count());
+  const auto boundary = static_cast<std::uintmax_t>(std::max<std::int64_t>(flags.boundary_count, 1));
+  const std::uintmax_t faces = static_cast<std::uintmax_t>(g.cells(0) + g.cells(1) + g.cells(2) + 3);
+  std::uintmax_t attributes = 8 * info.time_step_memory.size() + info.title.size() + 512;
+  for (const auto& r : info.record)
+    attributes += r.name.size() + 32 +
+                  (std::holds_alternative<std::string>(r.value) ? std::get<std::string>(r.value).size() : 8);
+  const std::uintmax_t datasets = 2 * field_count + 5;  // fields, their boundary values, grid
+  return field_count * (cells + boundary) * 8 + cells + boundary * 8 + faces * 8 + attributes +
+         2048 * datasets + 4096;
 }
 
 void write_snapshot(const std::string& path, const parallel::Layout& layout,
@@ -245,8 +299,14 @@ void write_snapshot(const std::string& path, const parallel::Layout& layout,
     if (!info.time_step_memory.empty())
       write_attribute(file.get(), "time_step_memory", info.time_step_memory);
     write_attribute(file.get(), "format_version", static_cast<long>(format_version));
-    write_attribute(file.get(), "bagnold_version", std::string(bagnold_version));
+    write_attribute(file.get(), "bagnold_version", version());
     write_attribute(file.get(), "title", info.title);
+    for (const auto& r : info.record) {
+      if (const auto* text = std::get_if<std::string>(&r.value))
+        write_utf8_attribute(file.get(), r.name.c_str(), *text);
+      else
+        write_attribute(file.get(), r.name.c_str(), std::get<long>(r.value));
+    }
     write_grid(file.get(), layout, flags);
 
     Group field_group(check(H5Gcreate2(file.get(), "fields", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),

@@ -2,7 +2,9 @@
 // HDF5 snapshots: one file per snapshot, written in parallel by all ranks.
 //
 // Layout of a snapshot file (docs/output.md):
-//   /                    attributes: time [s], step, dt [s], format_version, bagnold_version, title
+//   /                    attributes: time [s], step, dt [s], format_version, bagnold_version, title,
+//                        and the run's record (SnapshotInfo::record: the resolved deck, the
+//                        command line, git hash, ranks, ...; src/run/provenance.hpp)
 //   /grid/{x,y,z}_faces  face coordinates [m] (n + 1 each)
 //   /grid/cell_flags     uint8 (nz, ny, nx): 0 blocked, 1 fluid, 2 boundary (blocked, next to fluid)
 //   /fields/NAME         float64 (nz, ny, nx); value on fluid cells, NaN (the fill value) on
@@ -13,8 +15,11 @@
 // The file is written as NAME.tmp and renamed when complete, so a crash never leaves a torn
 // snapshot under its final name.
 
+#include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "src/grid/cell_flags.hpp"
@@ -32,6 +37,12 @@ struct FieldView {
   std::span<const double> values;  // local_count() entries (owned and halo)
 };
 
+// A root attribute naming how the run was made: a variable-length UTF-8 string or an int64.
+struct RecordAttribute {
+  std::string name;
+  std::variant<std::string, long> value;
+};
+
 struct SnapshotInfo {
   double time = 0.0;
   long step = 0;
@@ -40,6 +51,7 @@ struct SnapshotInfo {
   double dt_next = 0.0;  // [s] the step the time loop would take next (exact restart)
   // The time-step controller's recorded costs (exact restart), attribute time_step_memory.
   std::vector<double> time_step_memory;
+  std::vector<RecordAttribute> record;  // written on the root; not read back by read_snapshot
 };
 
 struct SnapshotHeader {
@@ -49,6 +61,16 @@ struct SnapshotHeader {
 // A snapshot's time and which of `names` it lacks (rank-local, serial read); throws when
 // unreadable.
 SnapshotHeader read_snapshot_header(const std::string& path, const std::vector<std::string>& names);
+
+// A string attribute of the snapshot's root (rank-local, serial read); nothing when the snapshot
+// has no such attribute (written before it existed). Throws when the file is unreadable.
+std::optional<std::string> read_text_attribute(const std::string& path, const std::string& name);
+
+// About how many bytes write_snapshot writes for `field_count` fields, from above: the arrays,
+// the grid, the attributes, and 2 KiB of HDF5 metadata per dataset (its metadata block; measured
+// 0.7-1.5 KiB). For checking that the disk has room before writing (run/output_writer.hpp).
+std::uintmax_t snapshot_size_estimate(const parallel::Layout& layout, const grid::CellFlags& flags,
+                                      std::size_t field_count, const SnapshotInfo& info);
 
 // Collective: every rank calls with the same field names in the same order.
 void write_snapshot(const std::string& path, const parallel::Layout& layout,

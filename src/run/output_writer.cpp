@@ -2,47 +2,21 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <optional>
+
+#include "src/run/run_directory.hpp"
 
 namespace bagnold::run {
 
 namespace fs = std::filesystem;
 
-namespace {
-std::string snapshot_name(std::size_t number) {
-  char name[64];
-  std::snprintf(name, sizeof name, "snapshot_%06zu.h5", number);
-  return name;
-}
-
-// The number of a snapshot file written by OutputWriter::write (snapshot_%06zu.h5), or nothing
-// for any other name (temporary files, other digit forms).
-std::optional<std::size_t> snapshot_number(const std::string& name) {
-  std::size_t n = 0;
-  int consumed = 0;
-  if (std::sscanf(name.c_str(), "snapshot_%zu.h5%n", &n, &consumed) != 1 ||
-      static_cast<std::size_t>(consumed) != name.size() || snapshot_name(n) != name)
-    return std::nullopt;
-  return n;
-}
-
-// The directory's snapshot files, ordered by number.
-std::vector<std::size_t> snapshot_numbers(const std::string& directory) {
-  std::vector<std::size_t> numbers;
-  for (const auto& entry : fs::directory_iterator(directory))
-    if (const auto n = snapshot_number(entry.path().filename().string())) numbers.push_back(*n);
-  std::sort(numbers.begin(), numbers.end());
-  return numbers;
-}
-}  // namespace
-
-OutputWriter::OutputWriter(const deck::Deck& deck, const parallel::Domain& domain)
+OutputWriter::OutputWriter(const deck::Deck& deck, const parallel::Domain& domain,
+                           std::vector<io::RecordAttribute> record)
     : m_domain(domain),
       m_directory(deck.output.directory),
       m_title(deck.run.title),
+      m_record(std::move(record)),
       m_interval(deck.output.snapshot_interval) {
   const auto& comm = domain.layout.comm();
   std::string problem;
@@ -65,19 +39,38 @@ OutputWriter::OutputWriter(const deck::Deck& deck, const parallel::Domain& domai
   if (failed) throw io::Hdf5Error(problem.empty() ? "cannot write to the output directory '" + m_directory + "'" : problem);
 }
 
+void OutputWriter::check_room(const std::string& path, const io::SnapshotInfo& info) const {
+  const auto& comm = m_domain.layout.comm();
+  std::string problem;
+  if (comm.is_root()) {
+    // The run's snapshots differ in size only by their attributes (time_step_memory grows).
+    const std::uintmax_t needed =
+        m_largest > 0 ? m_largest + 8192
+                      : io::snapshot_size_estimate(m_domain.layout, m_domain.flags,
+                                                   FlowState::field_names().size(), info);
+    std::error_code ec;
+    const auto space = fs::space(m_directory, ec);
+    if (!ec && space.available < needed)
+      problem = "cannot write the snapshot " + path + " (" + std::to_string(space.available / 1024) +
+                " kB free on its disk, about " + std::to_string(needed / 1024) +
+                " kB needed; disk full?)";
+  }
+  if (comm.max(std::int64_t{problem.empty() ? 0 : 1}))
+    throw io::Hdf5Error(problem.empty() ? "cannot write the snapshot " + path + " (disk full?)" : problem);
+}
 
-std::string find_snapshot(const std::string& file_or_directory) {
-  if (!fs::is_directory(file_or_directory)) return file_or_directory;
-  const auto numbers = snapshot_numbers(file_or_directory);
-  if (numbers.empty()) throw io::Hdf5Error("no snapshot in " + file_or_directory);
-  return (fs::path(file_or_directory) / snapshot_name(numbers.back())).string();
+void OutputWriter::note_size(const std::string& path) {
+  std::error_code ec;
+  if (m_domain.layout.comm().is_root())
+    if (const auto size = fs::file_size(path, ec); !ec) m_largest = std::max(m_largest, size);
 }
 
 std::string OutputWriter::write_diagnostic(const FlowState& state, double time, long step,
                                            double dt) {
   const std::string path = (fs::path(m_directory) / "diagnostic.h5").string();
-  io::write_snapshot(path, m_domain.layout, m_domain.flags, state.views(),
-                     {time, step, dt, m_title + " (diagnostic: a step that failed)", dt, {}});
+  const io::SnapshotInfo info{time, step, dt, m_title + " (diagnostic: a step that failed)", dt, {}, m_record};
+  check_room(path, info);
+  io::write_snapshot(path, m_domain.layout, m_domain.flags, state.views(), info);
   return path;
 }
 
@@ -118,8 +111,10 @@ std::string OutputWriter::write(const FlowState& state, double time, long step, 
                                 double dt_next, const std::vector<double>& time_step_memory) {
   const std::string name = snapshot_name(m_next_number++);
   const std::string path = (fs::path(m_directory) / name).string();
-  io::write_snapshot(path, m_domain.layout, m_domain.flags, state.views(),
-                     {time, step, dt, m_title, dt_next, time_step_memory});
+  const io::SnapshotInfo info{time, step, dt, m_title, dt_next, time_step_memory, m_record};
+  check_room(path, info);
+  io::write_snapshot(path, m_domain.layout, m_domain.flags, state.views(), info);
+  note_size(path);
   m_index.push_back({name, time, {}});
   if (m_domain.layout.comm().is_root())
     io::write_file_atomically((fs::path(m_directory) / "run.xmf").string(),

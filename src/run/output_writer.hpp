@@ -1,7 +1,8 @@
 #pragma once
 // Where a run's output goes: the output directory (created, checked writable at start), the
 // numbered HDF5 snapshots (snapshot_000000.h5, ...), the XDMF index run.xmf that ParaView opens,
-// and the decision of when the next snapshot is due.
+// and the decision of when the next snapshot is due. Which files are the run's, and how they
+// are found and replaced: run_directory.hpp.
 
 #include <string>
 #include <vector>
@@ -13,13 +14,12 @@
 
 namespace bagnold::run {
 
-// The snapshot a --restart argument names: the file itself, or a run directory's last snapshot.
-std::string find_snapshot(const std::string& file_or_directory);
-
 class OutputWriter {
  public:
   // Collective. Throws io::Hdf5Error with the directory's name if it cannot be created or written.
-  OutputWriter(const deck::Deck& deck, const parallel::Domain& domain);
+  // `record`: the run's provenance and deck (run/provenance.hpp), on every snapshot's root.
+  OutputWriter(const deck::Deck& deck, const parallel::Domain& domain,
+               std::vector<io::RecordAttribute> record = {});
 
   // True at the end of the first step that reaches the next scheduled snapshot time (steps are
   // not shortened to land on it).
@@ -39,13 +39,24 @@ class OutputWriter {
   bool written_at(double time) const { return !m_index.empty() && m_index.back().time == time; }
 
  private:
+  // Collective, before a snapshot is written to `path`: throws io::Hdf5Error on every rank when
+  // rank 0 finds less free space on the directory's disk than the snapshot needs (8 KiB more than
+  // the largest written so far, or io::snapshot_size_estimate). A parallel HDF5 (1.10) file whose writes
+  // failed on a full disk cannot be closed, and the program would crash on exit instead of
+  // stopping with this message (docs/reliability.md, "Disk full").
+  void check_room(const std::string& path, const io::SnapshotInfo& info) const;
+  // Rank 0 notes the size of the snapshot just written.
+  void note_size(const std::string& path);
+
   const parallel::Domain& m_domain;
   std::string m_directory;
   std::string m_title;
+  std::vector<io::RecordAttribute> m_record;
   double m_interval;
   double m_next_time = 0.0;
   std::vector<io::IndexedSnapshot> m_index;
   std::size_t m_next_number = 0;  // of the next snapshot file
+  std::uintmax_t m_largest = 0;   // [bytes] of the snapshots this writer wrote (rank 0)
 };
 
 }  // namespace bagnold::run

@@ -40,8 +40,11 @@ struct Written {
     io::write_snapshot(path, layout, domain.flags,
                        {{"solids_fraction", io::Centering::cell, values},
                         {"solids_velocity_x", io::Centering::x_face, values}},
-                       {0.25, 12, 1e-3, "test", 2e-3, {1e-3, 8000.0, 11.0}});
+                       {0.25, 12, 1e-3, "test", 2e-3, {1e-3, 8000.0, 11.0}, record});
   }
+  // The run's record (src/run/provenance.hpp), with text beyond ASCII.
+  static inline const std::vector<io::RecordAttribute> record = {
+      {"deck", std::string("[solids]\ndiameter = 0.001  # d_p [m], ε_s ≤ 0.6\n")}, {"ranks", 3L}};
 };
 
 TEST(Snapshot, GlobalArrayHoldsFluidValuesAndNaNElsewhere) {
@@ -96,6 +99,47 @@ TEST(Snapshot, ReadBackGivesEveryLocalCellIncludingHaloAndBoundary) {
     EXPECT_EQ(fields[0][static_cast<std::size_t>(l)], w.values[static_cast<std::size_t>(l)]);
     EXPECT_EQ(fields[1][static_cast<std::size_t>(l)], w.values[static_cast<std::size_t>(l)]);
   }
+}
+
+// Record attributes are variable-length UTF-8 strings (h5py reads them as str) or int64, on the
+// root; read_text_attribute gives them back, and the older fixed-length ones too.
+TEST(Snapshot, RecordAttributesAreUtf8StringsOrIntegers) {
+  const std::string path = file_name("snapshot_record");
+  Written w(path);
+  EXPECT_EQ(io::read_text_attribute(path, "deck"), std::get<std::string>(Written::record[0].value));
+  EXPECT_EQ(io::read_text_attribute(path, "title"), std::string("test"));  // fixed-length ASCII
+  EXPECT_FALSE(io::read_text_attribute(path, "no_such_attribute"));
+  EXPECT_THROW(io::read_text_attribute(path + ".missing", "deck"), io::Hdf5Error);
+  if (!parallel::Communicator().is_root()) return;
+  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  const hid_t deck = H5Aopen(file, "deck", H5P_DEFAULT);
+  const hid_t type = H5Aget_type(deck);
+  EXPECT_GT(H5Tis_variable_str(type), 0);
+  EXPECT_EQ(H5Tget_cset(type), H5T_CSET_UTF8);
+  const hid_t ranks = H5Aopen(file, "ranks", H5P_DEFAULT);
+  const hid_t ranks_type = H5Aget_type(ranks);
+  EXPECT_EQ(H5Tget_class(ranks_type), H5T_INTEGER);
+  long value = 0;
+  ASSERT_GE(H5Aread(ranks, H5T_NATIVE_LONG, &value), 0);
+  EXPECT_EQ(value, 3);
+  H5Tclose(ranks_type);
+  H5Aclose(ranks);
+  H5Tclose(type);
+  H5Aclose(deck);
+  H5Fclose(file);
+}
+
+// The estimate the writer checks the free disk space against covers the file, without asking for
+// much more than it takes (the hopper: 2 fields, a 3 kB deck in the record).
+TEST(Snapshot, SizeEstimateCoversTheFile) {
+  const std::string path = file_name("snapshot_size");
+  Written w(path);
+  io::SnapshotInfo info{0.25, 12, 1e-3, "test", 2e-3, {1e-3, 8000.0, 11.0}, Written::record};
+  const auto estimate = io::snapshot_size_estimate(w.domain.layout, w.domain.flags, 2, info);
+  const auto size = std::filesystem::file_size(path);
+  EXPECT_GE(estimate, size);
+  EXPECT_LE(estimate, 2 * size);
 }
 
 TEST(Snapshot, ReadOntoAnotherRankCountFromASerialFile) {

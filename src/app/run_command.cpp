@@ -22,6 +22,7 @@
 #include "src/run/monitor_columns.hpp"
 #include "src/run/output_writer.hpp"
 #include "src/run/provenance.hpp"
+#include "src/run/restart_snapshot.hpp"
 #include "src/run/run_directory.hpp"
 
 namespace bagnold::app {
@@ -71,12 +72,16 @@ int run_command(const DeckArguments& args) {
   // Where the run writes, and whether it may (output_directory.hpp).
   std::string snapshot;
   if (!args.restart.empty()) {
-    try {
-      snapshot = run::find_snapshot(args.restart);
-    } catch (const std::exception& e) {  // io::Hdf5Error, or the file system's
-      say(std::string("bagnold run: cannot restart: ") + e.what(), true);
+    // The newest snapshot that passes its checksums and ranges (restart_snapshot.hpp).
+    const auto choice = run::choose_restart_snapshot(args.restart, comm);
+    for (const auto& note : choice.notes) say("bagnold run: " + note + "; trying the one before", true);
+    if (choice.snapshot.empty()) {
+      say("bagnold run: cannot restart: " + choice.problem, true);
       return bad_input;
     }
+    if (!choice.notes.empty())
+      say("bagnold run: falling back to " + choice.snapshot + ", the newest good snapshot", true);
+    snapshot = choice.snapshot;
     if (const int code = continue_run_directory(args, snapshot, deck, comm); code != success)
       return code;
   }

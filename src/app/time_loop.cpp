@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "src/app/time_step_controller.hpp"
+#include "src/run/agree.hpp"
 #include "src/run/monitor_columns.hpp"
 #include "src/run/stop_request.hpp"
 
@@ -109,7 +110,9 @@ RunSummary run_time_loop(const TimeLoopContext& context, FlowSolver& flow, run::
     ++step;
     summary.last_dt = dt_try;
     const double courant = flow.courant_number(state, dt_try);
-    context.monitor.append(time, monitor_row(context, flow, state, dt_try, result, courant));
+    const auto row = monitor_row(context, flow, state, dt_try, result, courant);  // collective
+    // Rank 0 writes the row; all ranks stop together if it cannot (a full disk).
+    run::agree(context.domain.layout.comm(), [&] { context.monitor.append(time, row); });
     const std::string change = controller.converged(dt_try, result.iterations, courant, step);
     if (!change.empty()) context.log(fmt::format("t = {:.6g} s: {}", time, change));
     // The snapshot records the next dt, so a restart continues exactly as this run would.

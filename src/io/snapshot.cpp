@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "src/io/hdf5_handle.hpp"
+#include "src/io/snapshot_check.hpp"
 #include "src/util/build_info.hpp"
 
 namespace bagnold::io {
@@ -57,6 +58,13 @@ void write_utf8_attribute(hid_t object, const char* name, const std::string& val
                     "H5Acreate"));
   const char* text = value.c_str();
   check_status(H5Awrite(a.get(), type.get(), &text), "H5Awrite");
+}
+
+void write_checksum_attribute(hid_t object, std::uint64_t value) {
+  Dataspace space(check(H5Screate(H5S_SCALAR), "H5Screate"));
+  Attribute a(check(H5Acreate2(object, "checksum", H5T_NATIVE_UINT64, space.get(), H5P_DEFAULT,
+                               H5P_DEFAULT), "H5Acreate checksum"));
+  check_status(H5Awrite(a.get(), H5T_NATIVE_UINT64, &value), "H5Awrite checksum");
 }
 
 void write_attribute(hid_t object, const char* name, const std::vector<double>& values) {
@@ -322,7 +330,30 @@ void write_snapshot(const std::string& path, const parallel::Layout& layout,
                               placement.boundary_naturals.data()), "H5Dwrite natural");
     }
     const double fill = std::numeric_limits<double>::quiet_NaN();
+    // Each dataset's checksum (snapshot_check.hpp): this rank's points, summed over the ranks.
+    const auto dims = domain_dims(layout.grid());
+    const std::uint64_t boundary_elements = std::max<hsize_t>(boundary_total, 1);
+    std::vector<std::uint64_t> checksums(2 * fields.size(), 0);
+    for (std::size_t f = 0; f < fields.size(); ++f) {
+      const auto& values = fields[f].values;
+      for (std::size_t p = 0; p < placement.fluid_locals.size(); ++p) {
+        const hsize_t* c = &placement.fluid_coordinates[3 * p];
+        const std::uint64_t e = (c[0] * dims[1] + c[1]) * dims[2] + c[2];
+        checksums[2 * f] += element_hash(e, values[static_cast<std::size_t>(placement.fluid_locals[p])]) -
+                            element_hash(e, fill);
+      }
+      for (std::size_t p = 0; p < placement.boundary_locals.size(); ++p) {
+        const std::uint64_t e = placement.boundary_coordinates[p];
+        checksums[2 * f + 1] +=
+            element_hash(e, values[static_cast<std::size_t>(placement.boundary_locals[p])]) - element_hash(e, fill);
+      }
+    }
+    MPI_Allreduce(MPI_IN_PLACE, checksums.data(), static_cast<int>(checksums.size()), MPI_UINT64_T,
+                  MPI_SUM, comm.get());
+    const std::uint64_t fluid_base = uniform_checksum(dims[0] * dims[1] * dims[2], fill);
+    const std::uint64_t boundary_base = uniform_checksum(boundary_elements, fill);
     std::vector<double> buffer;
+    std::size_t index = 0;
     for (const auto& field : fields) {
       Dataset ds = create_dataset(field_group.get(), field.name, H5T_NATIVE_DOUBLE,
                                   domain_dims(layout.grid()), &fill);
@@ -330,12 +361,15 @@ void write_snapshot(const std::string& path, const parallel::Layout& layout,
       buffer.clear();
       for (const int l : placement.fluid_locals) buffer.push_back(field.values[static_cast<std::size_t>(l)]);
       transfer_points(ds.get(), H5T_NATIVE_DOUBLE, placement.fluid_coordinates, 3, buffer.data(), true);
+      write_checksum_attribute(ds.get(), fluid_base + checksums[2 * index]);
 
       Dataset bs = create_dataset(boundary_group.get(), field.name, H5T_NATIVE_DOUBLE,
                                   {std::max<hsize_t>(boundary_total, 1)}, &fill);
       buffer.clear();
       for (const int l : placement.boundary_locals) buffer.push_back(field.values[static_cast<std::size_t>(l)]);
       transfer_points(bs.get(), H5T_NATIVE_DOUBLE, placement.boundary_coordinates, 1, buffer.data(), true);
+      write_checksum_attribute(bs.get(), boundary_base + checksums[2 * index + 1]);
+      ++index;
     }
     check_status(H5Fflush(file.get(), H5F_SCOPE_GLOBAL), "H5Fflush");
   } catch (const Hdf5Error& e) {

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "src/run/agree.hpp"
 #include "src/run/run_directory.hpp"
 
 namespace bagnold::run {
@@ -88,7 +89,14 @@ void OutputWriter::resume(double time) {
     for (const std::size_t n : snapshot_numbers(m_directory)) {
       const std::string name = snapshot_name(n);
       const std::string path = (fs::path(m_directory) / name).string();
-      auto header = io::read_snapshot_header(path, fields);
+      // A snapshot that cannot be read (truncated, corrupted) is left out of the index; if it
+      // follows the last kept one, the next snapshot written takes its number.
+      io::SnapshotHeader header;
+      try {
+        header = io::read_snapshot_header(path, fields);
+      } catch (const io::Hdf5Error&) {
+        continue;
+      }
       if (header.time > time * (1 + 1e-12) + 1e-300) break;
       m_index.push_back({name, header.time, std::move(header.absent_fields)});
       m_next_number = n + 1;
@@ -116,9 +124,11 @@ std::string OutputWriter::write(const FlowState& state, double time, long step, 
   io::write_snapshot(path, m_domain.layout, m_domain.flags, state.views(), info);
   note_size(path);
   m_index.push_back({name, time, {}});
-  if (m_domain.layout.comm().is_root())
-    io::write_file_atomically((fs::path(m_directory) / "run.xmf").string(),
-                              io::xdmf_text(m_domain.grid, m_index, FlowState::field_names()));
+  agree(m_domain.layout.comm(), [&] {
+    if (m_domain.layout.comm().is_root())
+      io::write_file_atomically((fs::path(m_directory) / "run.xmf").string(),
+                                io::xdmf_text(m_domain.grid, m_index, FlowState::field_names()));
+  });
   while (m_next_time <= time * (1 + 1e-12)) m_next_time += m_interval;
   return path;
 }

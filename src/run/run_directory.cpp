@@ -56,13 +56,6 @@ std::vector<std::size_t> snapshot_numbers(const std::string& directory) {
   return numbers;
 }
 
-std::string find_snapshot(const std::string& file_or_directory) {
-  if (!fs::is_directory(file_or_directory)) return file_or_directory;
-  const auto numbers = snapshot_numbers(file_or_directory);
-  if (numbers.empty()) throw io::Hdf5Error("no snapshot in " + file_or_directory);
-  return (fs::path(file_or_directory) / snapshot_name(numbers.back())).string();
-}
-
 std::string restart_directory(const std::string& file_or_directory) {
   if (fs::is_directory(file_or_directory)) return file_or_directory;
   const fs::path parent = fs::path(file_or_directory).parent_path();

@@ -24,9 +24,6 @@ std::optional<std::size_t> snapshot_number(const std::string& file_name);
 // The directory's snapshot files, ordered by number.
 std::vector<std::size_t> snapshot_numbers(const std::string& directory);
 
-// The snapshot a --restart argument names: the file itself, or a run directory's last snapshot.
-// Throws io::Hdf5Error when a directory holds none.
-std::string find_snapshot(const std::string& file_or_directory);
 // The run directory a --restart argument names: the directory itself, or the snapshot's ("."
 // for a bare file name).
 std::string restart_directory(const std::string& file_or_directory);

@@ -1,18 +1,23 @@
 #!/bin/sh
 # A disk that fills during a run: the run stops with exit code 1 and a message naming the file;
 # every snapshot left under a final name is complete and readable, and no temporary remains.
-# Needs to mount a small tmpfs (root); skipped (exit 77) where that is not allowed.
-#   disk_full.sh BAGNOLD WORK_DIR
+# On several ranks every rank must stop (within 120 s, or the test fails), not wait in a
+# collective that another has left. Needs to mount a small tmpfs (root); skipped (exit 77) where
+# that is not allowed.
+#   disk_full.sh BAGNOLD WORK_DIR [MPIRUN RANKS]
 set -u
 bagnold=$1; work=$2
+launcher=""
+[ $# -ge 4 ] && launcher="$3 --oversubscribe -np $4"
 mkdir -p "$work"
 umount "$work" 2>/dev/null
 mount -t tmpfs -o size=160k tmpfs "$work" 2>/dev/null || { echo "cannot mount a tmpfs here: skipped"; exit 77; }
 trap 'umount "$work"' EXIT
-$bagnold run tests/verification/poiseuille/channel.toml --set output.directory=$work/run \
+timeout 120 $launcher $bagnold run tests/verification/poiseuille/channel.toml --set output.directory=$work/run \
   --set output.snapshot_interval=0.05 --set output.progress=never > $work/../disk_full.log 2>&1
 code=$?
 tail -1 $work/../disk_full.log
+[ "$code" -eq 124 ] && { echo "FAIL: the ranks did not stop within 120 s"; exit 1; }
 [ "$code" -eq 1 ] || { echo "FAIL: exit code $code, expected 1"; exit 1; }
 grep -Eq "cannot (write|write the snapshot|append to the monitor) $work/run/[^ ]+ .*disk full" $work/../disk_full.log \
   || { echo "FAIL: the message does not name the file"; exit 1; }

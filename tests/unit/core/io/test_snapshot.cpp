@@ -10,6 +10,7 @@
 
 #include "src/deck/load.hpp"
 #include "src/io/snapshot.hpp"
+#include "src/io/snapshot_check.hpp"
 #include "src/parallel/domain.hpp"
 #include "tests/support/test_decks.hpp"
 
@@ -206,6 +207,34 @@ TEST(Snapshot, MissingOptionalFieldReadsAsNaN) {
     if (layout.kind(l) == grid::CellKind::fluid) {
       EXPECT_EQ(fields[0][static_cast<std::size_t>(l)], w.values[static_cast<std::size_t>(l)]);
     }
+}
+
+TEST(Snapshot, ChecksumsWrittenFromAnyRankCountMatchTheDataAndCatchAChangedValue) {
+  const std::string path = file_name("snapshot_checksum");
+  Written w(path);
+  if (!parallel::Communicator().is_root()) return;  // the checks are serial
+  // The ranks' partial sums equal the serial sum over the file's elements.
+  EXPECT_FALSE(io::verify_snapshot(path, {{"solids_fraction"}, {"solids_velocity_x"}}));
+  // The values are 1 + 0.001 n: above a fraction's range.
+  const auto range = io::verify_snapshot(path, {{"solids_fraction", 0.0, 1.0}});
+  ASSERT_TRUE(range);
+  EXPECT_NE(range->find("dataset fields/solids_fraction holds 1."), std::string::npos) << *range;
+  EXPECT_NE(range->find("in fluid cell (i, j, k) = ("), std::string::npos) << *range;
+  // One element changed behind the writer's back (the last bit of one value).
+  {
+    const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+    const hid_t ds = H5Dopen2(file, "boundary/solids_velocity_x", H5P_DEFAULT);
+    std::vector<double> values(static_cast<std::size_t>(H5Sget_simple_extent_npoints(H5Dget_space(ds))));
+    H5Dread(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data());
+    values[values.size() / 2] = std::nextafter(values[values.size() / 2], 10.0);
+    H5Dwrite(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data());
+    H5Dclose(ds);
+    H5Fclose(file);
+  }
+  const auto changed = io::verify_snapshot(path, {{"solids_fraction"}, {"solids_velocity_x"}});
+  ASSERT_TRUE(changed);
+  EXPECT_EQ(*changed, "dataset boundary/solids_velocity_x does not match its checksum (corrupted)");
+  EXPECT_EQ(*io::verify_snapshot(path + ".missing", {}), "cannot open it as HDF5 (truncated or not a snapshot)");
 }
 
 }  // namespace

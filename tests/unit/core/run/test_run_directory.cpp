@@ -82,9 +82,6 @@ TEST(RunDirectory, ARestartsDirectoryIsTheOneGivenOrTheSnapshots) {
   EXPECT_EQ(run::restart_directory(dir.string()), dir.string());
   EXPECT_EQ(run::restart_directory((dir / "snapshot_000002.h5").string()), dir.string());
   EXPECT_EQ(run::restart_directory("snapshot_000002.h5"), ".");
-  EXPECT_EQ(run::find_snapshot(dir.string()), (dir / "snapshot_000004.h5").string());
-  EXPECT_EQ(run::find_snapshot((dir / "snapshot_000002.h5").string()),
-            (dir / "snapshot_000002.h5").string());
 }
 
 TEST(RunDirectory, TheRecordIsTheDeckAndOneProvenanceEntryPerStart) {

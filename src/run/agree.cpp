@@ -1,0 +1,30 @@
+#include "src/run/agree.hpp"
+
+#include <exception>
+#include <string>
+
+#include "src/io/io_error.hpp"
+
+namespace bagnold::run {
+
+void agree(const parallel::Communicator& comm, const std::function<void()>& action) {
+  std::string problem;
+  try {
+    action();
+  } catch (const std::exception& e) {  // io::Hdf5Error, or the file system's
+    problem = e.what();
+    if (problem.empty()) problem = "a file-system operation failed";
+  }
+  // The lowest failing rank (size() when none) sends its message to all.
+  const int mine = problem.empty() ? comm.size() : comm.rank();
+  int failed = mine;
+  MPI_Allreduce(&mine, &failed, 1, MPI_INT, MPI_MIN, comm.get());
+  if (failed == comm.size()) return;
+  long size = static_cast<long>(problem.size());
+  MPI_Bcast(&size, 1, MPI_LONG, failed, comm.get());
+  problem.resize(static_cast<std::size_t>(size));
+  MPI_Bcast(problem.data(), static_cast<int>(size), MPI_CHAR, failed, comm.get());
+  throw io::Hdf5Error(problem);
+}
+
+}  // namespace bagnold::run

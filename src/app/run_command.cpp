@@ -3,7 +3,7 @@
 // every snapshot's attributes), write the initial state, and advance to run.end_time with the
 // two-fluid solver (gas alone, gas and solids, or solids in vacuum).
 #include <fmt/format.h>
-#include <unistd.h>
+#include <unistd.h>  // isatty
 
 #include <algorithm>
 #include <chrono>
@@ -140,10 +140,8 @@ int run_command(const DeckArguments& args) {
     run::ProgressLine progress(
         run::progress_style(deck.output.progress, comm.is_root(), isatty(STDERR_FILENO)),
         deck.output.progress_interval, deck.run.end_time, start.time);
-    const TimeLoopContext context{deck,     domain,
-                                  output,   monitor,
-                                  progress, [](const std::string& line) { say(line); },
-                                  args.verbose};
+    const TimeLoopContext context{deck, domain, output, monitor, progress,
+                                  [](const std::string& line) { say(line); }, args.verbose};
     const auto started = std::chrono::steady_clock::now();
     const auto result = run_time_loop(context, flow, state, start.time, start.step, start.dt,
                                       start.time_step_memory);

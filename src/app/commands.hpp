@@ -13,6 +13,7 @@ struct DeckArguments {
   std::string restart;                 // --restart SNAPSHOT_OR_RUN_DIR
   bool force = false;                  // --force: restart with a deck other than the snapshot's
   bool overwrite = false;              // --overwrite: replace the run in the output directory
+  bool verbose = false;                // --verbose: log every change of dt
   std::vector<std::string> command_line;  // argv, for the run's provenance
 };
 

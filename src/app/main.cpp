@@ -39,6 +39,9 @@ int main(int argc, char** argv) {
   run->add_flag("--overwrite", deck_args.overwrite,
                 "Replace the run the output directory holds (its snapshots, run.xmf, monitor.csv, "
                 "run.toml, provenance.toml, diagnostic.h5) instead of refusing");
+  run->add_flag("--verbose", deck_args.verbose,
+                "Log every change of dt with its reason, instead of one summary line per snapshot "
+                "interval");
   run->add_option("--petsc-options", deck_args.petsc_options,
                   "PETSc options, e.g. \"-log_view -pressure_ksp_monitor\"");
   auto* check = cli.add_subcommand(

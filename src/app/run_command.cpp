@@ -3,6 +3,7 @@
 // every snapshot's attributes), write the initial state, and advance to run.end_time with the
 // two-fluid solver (gas alone, gas and solids, or solids in vacuum).
 #include <fmt/format.h>
+#include <unistd.h>  // isatty
 
 #include <algorithm>
 #include <chrono>
@@ -15,6 +16,7 @@
 #include "src/app/output_directory.hpp"
 #include "src/app/preflight.hpp"
 #include "src/app/run_banner.hpp"
+#include "src/app/run_log.hpp"
 #include "src/app/time_loop.hpp"
 #include "src/deck/load.hpp"
 #include "src/io/monitor.hpp"
@@ -137,12 +139,14 @@ int run_command(const DeckArguments& args) {
     solver::FlowSolver flow(deck, domain);
     if (start.snapshot.empty()) {
       flow.apply_boundary_values(state);
-      output.write(state, 0.0, 0, deck.run.dt_initial, deck.run.dt_initial);
+      say(snapshot_line(0.0, output.write(state, 0.0, 0, deck.run.dt_initial, deck.run.dt_initial)));
     }
     run::install_stop_handlers();
-    run::ProgressLine progress(deck.output.progress, comm.is_root(), deck.run.end_time, start.time);
+    run::ProgressLine progress(
+        run::progress_style(deck.output.progress, comm.is_root(), isatty(STDERR_FILENO)),
+        deck.output.progress_interval, deck.run.end_time, start.time);
     const TimeLoopContext context{deck, domain, output, monitor, progress,
-                                          [](const std::string& line) { say(line); }};
+                                  [](const std::string& line) { say(line); }, args.verbose};
     const auto started = std::chrono::steady_clock::now();
     const auto result = run_time_loop(context, flow, state, start.time, start.step, start.dt,
                                       start.time_step_memory);

@@ -1,8 +1,9 @@
+// say(): every message of the program goes through the one Console (run/console.hpp), on rank 0
+// only, so a log line never lands on the progress line.
 #include <mpi.h>
 
-#include <cstdio>
-
 #include "src/app/commands.hpp"
+#include "src/run/console.hpp"
 
 namespace bagnold::app {
 
@@ -10,10 +11,7 @@ void say(const std::string& text, bool error) {
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   if (rank != 0) return;
-  std::FILE* stream = error ? stderr : stdout;
-  std::fputs(text.c_str(), stream);
-  if (!text.empty() && text.back() != '\n') std::fputc('\n', stream);
-  std::fflush(stream);
+  run::console().line(text, error);
 }
 
 }  // namespace bagnold::app

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <fmt/format.h>
 
+#include "src/app/run_log.hpp"
 #include "src/app/time_step_controller.hpp"
 #include "src/run/agree.hpp"
 #include "src/run/monitor_columns.hpp"
@@ -46,6 +47,7 @@ RunSummary run_time_loop(const TimeLoopContext& context, FlowSolver& flow, run::
   long step = start_step;
   TimeStepController controller(run, context.deck.numerics, dt_start);
   controller.restore(time_step_memory);
+  RunLog run_log(context.log, context.verbose, controller.dt());
   run::FlowState old = state;
   run::FlowState failed = state;  // the last iterate of a step that did not converge
   const double end = run.end_time;
@@ -62,7 +64,8 @@ RunSummary run_time_loop(const TimeLoopContext& context, FlowSolver& flow, run::
       // A signal: the step in progress is dropped and the last completed one written at once.
       state = old;
       if (!context.output.written_at(time))
-        context.output.write(state, time, step, summary.last_dt, controller.dt(), controller.memory());
+        run_log.snapshot(time, context.output.write(state, time, step, summary.last_dt,
+                                                    controller.dt(), controller.memory()));
       summary.interrupted = true;
       context.log(fmt::format("t = {:.6g} s: stopped by signal {} in outer iteration {} of a step; "
                               "that step was abandoned; final snapshot written at t = {:.6g} s",
@@ -114,12 +117,13 @@ RunSummary run_time_loop(const TimeLoopContext& context, FlowSolver& flow, run::
     // Rank 0 writes the row; all ranks stop together if it cannot (a full disk).
     run::agree(context.domain.layout.comm(), [&] { context.monitor.append(time, row); });
     const std::string change = controller.converged(dt_try, result.iterations, courant, step);
-    if (!change.empty()) context.log(fmt::format("t = {:.6g} s: {}", time, change));
+    run_log.stepped(time, controller.dt(), change);
     // The snapshot records the next dt, so a restart continues exactly as this run would.
     const bool stop = run::stop_requested(context.domain.layout.comm());
     const bool finished = time >= end - tiny;  // the final state is always written
     if (context.output.snapshot_due(time) || stop || finished)
-      context.output.write(state, time, step, dt_try, controller.dt(), controller.memory());
+      run_log.snapshot(time, context.output.write(state, time, step, dt_try, controller.dt(),
+                                                  controller.memory()));
     context.progress.update(time, dt_try, result.iterations);
     if (stop) {
       summary.interrupted = true;

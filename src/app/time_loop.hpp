@@ -6,8 +6,10 @@
 // numerics.max_outer_iterations (or produces NaN, or has a linear solve that fails) is undone
 // and redone with dt / 2; converged steps grow or shrink dt by their outer iterations, their
 // recorded cost per simulated second and the Courant limit.
-// Steps are shortened to land exactly on snapshot times and on end_time, and the state at
-// end_time is always written. Every change of dt is logged. A step that fails at run.dt_min stops the run.
+// Only the last step is shortened, to land on end_time; a snapshot is written at the end of the
+// first step that reaches its scheduled time, and the state at end_time is always written.
+// Every redone step is logged; each snapshot and the dt changes before it as run_log.hpp says.
+// A step that fails at run.dt_min stops the run.
 
 #include <functional>
 #include <string>
@@ -40,6 +42,7 @@ struct TimeLoopContext {
   io::Monitor& monitor;
   run::ProgressLine& progress;
   std::function<void(const std::string&)> log;  // rank 0 prints
+  bool verbose = false;  // --verbose: log every change of dt (run_log.hpp)
 };
 
 // From `start_time` (step number `start_step`) with a first step of `dt_start`. A SIGINT or

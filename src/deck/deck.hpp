@@ -136,6 +136,7 @@ struct Output {
   std::string directory;
   double snapshot_interval = 0.1;  // [s]
   std::string progress = "auto";   // auto | always | never
+  double progress_interval = 30.0; // [s] of wall time between plain progress lines
 };
 
 // Where a value of the deck was written: the file, line and column, or the --set argument that

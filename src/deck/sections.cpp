@@ -321,7 +321,13 @@ const Section<Output>& output_section() {
                "output, so the schedule does not change the answer (the final step lands on "
                "run.end_time)."),
       key(&Output::progress, "progress").init().one_of({"auto", "always", "never"})
-          .doc("Progress line on stderr: auto shows it only when stderr is a terminal."),
+          .doc("The progress line (simulated time, dt, outer iterations, time left). auto: "
+               "redrawn in place on stderr when stderr is a terminal, else a plain line on "
+               "stdout every output.progress_interval; always: redrawn in place on stderr even "
+               "when it is not a terminal; never: none. Log lines clear it first either way."),
+      key(&Output::progress_interval, "progress_interval").unit("s").init().within(0.0, 86400.0)
+          .doc("Wall time between plain progress lines (output.progress = auto without a "
+               "terminal); 0 writes one after every step."),
   }};
   return s;
 }

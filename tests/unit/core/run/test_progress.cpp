@@ -1,8 +1,14 @@
 // The progress line: the estimated time left comes from the mean rate so far (simulated seconds
-// per wall second since the start or restart); before any progress there is no estimate.
+// per wall second since the start or restart); before any progress there is no estimate. Its
+// style follows output.progress, the rank and whether stderr is a terminal; in place it is
+// redrawn at most every 250 ms, plain it is a line without control characters per interval.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <vector>
+
 #include "src/run/progress.hpp"
+#include "tests/unit/core/run/fake_terminal.hpp"
 
 namespace bagnold::tests {
 namespace {
@@ -38,25 +44,50 @@ TEST(Progress, NothingLeftAtTheEnd) {
             std::string::npos);
 }
 
-TEST(ProgressLine, DrawsOnlyWhenAskedAndOnRoot) {
-  // Under ctest stderr is not a terminal: "auto" stays quiet, as do "never" and other ranks.
-  for (const auto& [mode, root] : {std::pair{"never", true}, std::pair{"auto", true},
-                                   std::pair{"always", false}}) {
-    testing::internal::CaptureStderr();
-    run::ProgressLine line(mode, root, 1.0, 0.0);
-    line.update(0.5, 1e-4, 3);
-    line.finish();
-    EXPECT_EQ(testing::internal::GetCapturedStderr(), "") << mode;
-  }
-  testing::internal::CaptureStderr();
-  run::ProgressLine line("always", true, 1.0, 0.0);
-  line.update(0.5, 1e-4, 3);
-  line.update(0.6, 1e-4, 3);  // within 250 ms of the last draw: not redrawn
+TEST(ProgressLine, StyleFollowsTheModeTheRankAndTheTerminal) {
+  using run::ProgressStyle;
+  EXPECT_EQ(run::progress_style("auto", true, true), ProgressStyle::in_place);
+  EXPECT_EQ(run::progress_style("auto", true, false), ProgressStyle::plain);
+  EXPECT_EQ(run::progress_style("always", true, false), ProgressStyle::in_place);
+  EXPECT_EQ(run::progress_style("never", true, true), ProgressStyle::none);
+  EXPECT_EQ(run::progress_style("never", true, false), ProgressStyle::none);
+  EXPECT_EQ(run::progress_style("always", false, true), ProgressStyle::none);
+  EXPECT_EQ(run::progress_style("auto", false, false), ProgressStyle::none);
+}
+
+// What a progress line of `style` writes for updates at `times` (dt 1e-4 s, iterations 3, 4, ...)
+// and its finish, to a console on one stream.
+std::string drawn(run::ProgressStyle style, double interval, const std::vector<double>& times) {
+  FakeTerminal terminal;
+  run::Console console(terminal.stream(), terminal.stream());
+  run::ProgressLine line(style, interval, 1.0, 0.0, console);
+  int iterations = 3;
+  for (const double t : times) line.update(t, 1e-4, iterations++);
   line.finish();
-  const std::string out = testing::internal::GetCapturedStderr();
+  return terminal.bytes();
+}
+
+TEST(ProgressLine, InPlaceIsDrawnAtOnceAndAtMostEvery250ms) {
+  // The second update comes within 250 ms of the first: not redrawn.
+  const std::string out = drawn(run::ProgressStyle::in_place, 30.0, {0.5, 0.6});
   EXPECT_EQ(out.rfind("\rt = 0.5 s / 1 s  dt = 1.00e-04 s  it = 3  ETA ", 0), 0u) << out;
   EXPECT_EQ(out.find("t = 0.6"), std::string::npos) << out;
   EXPECT_EQ(out.back(), '\n');
+}
+
+TEST(ProgressLine, PlainLinesHaveNoControlCharactersAndWaitForTheInterval) {
+  const std::string out = drawn(run::ProgressStyle::plain, 0.0, {0.5, 0.6});
+  EXPECT_EQ(out.find_first_of("\r\033"), std::string::npos) << out;
+  const auto second = out.find('\n') + 1;
+  EXPECT_EQ(out.rfind("t = 0.5 s / 1 s  dt = 1.00e-04 s  it = 3  ETA ", 0), 0u) << out;
+  EXPECT_EQ(out.find("t = 0.6 s / 1 s  dt = 1.00e-04 s  it = 4  ETA ", second), second) << out;
+  EXPECT_EQ(std::count(out.begin(), out.end(), '\n'), 2) << out;
+  // The first plain line comes a whole interval after the start, not at the first step.
+  EXPECT_EQ(drawn(run::ProgressStyle::plain, 3600.0, {0.5}), "");
+}
+
+TEST(ProgressLine, NoneDrawsNothing) {
+  EXPECT_EQ(drawn(run::ProgressStyle::none, 0.0, {0.5, 0.6}), "");
 }
 
 }  // namespace

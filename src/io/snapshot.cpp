@@ -39,16 +39,7 @@ void write_attribute(hid_t object, const char* name, long value) {
   check_status(H5Awrite(a.get(), H5T_NATIVE_LONG, &value), "H5Awrite");
 }
 
-void write_attribute(hid_t object, const char* name, const std::string& value) {
-  Datatype type(check(H5Tcopy(H5T_C_S1), "H5Tcopy"));
-  check_status(H5Tset_size(type.get(), std::max<std::size_t>(1, value.size())), "H5Tset_size");
-  Dataspace space(check(H5Screate(H5S_SCALAR), "H5Screate"));
-  Attribute a(check(H5Acreate2(object, name, type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
-                    "H5Acreate"));
-  check_status(H5Awrite(a.get(), type.get(), value.empty() ? " " : value.c_str()), "H5Awrite");
-}
-
-// A variable-length UTF-8 string (h5py reads it as str), the form of every newer text attribute.
+// A variable-length UTF-8 string (h5py reads it as str): every text attribute.
 void write_utf8_attribute(hid_t object, const char* name, const std::string& value) {
   Datatype type(check(H5Tcopy(H5T_C_S1), "H5Tcopy"));
   check_status(H5Tset_size(type.get(), H5T_VARIABLE), "H5Tset_size");
@@ -307,8 +298,8 @@ void write_snapshot(const std::string& path, const parallel::Layout& layout,
     if (!info.time_step_memory.empty())
       write_attribute(file.get(), "time_step_memory", info.time_step_memory);
     write_attribute(file.get(), "format_version", static_cast<long>(format_version));
-    write_attribute(file.get(), "bagnold_version", version());
-    write_attribute(file.get(), "title", info.title);
+    write_utf8_attribute(file.get(), "bagnold_version", version());
+    write_utf8_attribute(file.get(), "title", info.title);
     for (const auto& r : info.record) {
       if (const auto* text = std::get_if<std::string>(&r.value))
         write_utf8_attribute(file.get(), r.name.c_str(), *text);
@@ -357,7 +348,8 @@ void write_snapshot(const std::string& path, const parallel::Layout& layout,
     for (const auto& field : fields) {
       Dataset ds = create_dataset(field_group.get(), field.name, H5T_NATIVE_DOUBLE,
                                   domain_dims(layout.grid()), &fill);
-      write_attribute(ds.get(), "centering", std::string(centering_name(field.centering)));
+      write_utf8_attribute(ds.get(), "centering", centering_name(field.centering));
+      if (!field.units.empty()) write_utf8_attribute(ds.get(), "units", field.units);
       buffer.clear();
       for (const int l : placement.fluid_locals) buffer.push_back(field.values[static_cast<std::size_t>(l)]);
       transfer_points(ds.get(), H5T_NATIVE_DOUBLE, placement.fluid_coordinates, 3, buffer.data(), true);

@@ -35,6 +35,7 @@ struct FieldView {
   std::string name;
   Centering centering = Centering::cell;
   std::span<const double> values;  // local_count() entries (owned and halo)
+  std::string units;               // SI, as the dataset's `units` attribute ("1": dimensionless)
 };
 
 // A root attribute naming how the run was made: a variable-length UTF-8 string or an int64.

@@ -44,6 +44,17 @@ std::vector<const std::vector<double>*> FlowState::fields() const {
   return all_fields<const std::vector<double>*>(*this);
 }
 
+namespace {
+// The SI units of a snapshot field, by name (docs/output.md).
+std::string units_of(const std::string& name) {
+  if (name.find("velocity") != std::string::npos) return "m/s";
+  if (name.find("pressure_shear_rate") != std::string::npos) return "1/s";
+  if (name.find("pressure") != std::string::npos) return "Pa";
+  if (name == "granular_temperature") return "m^2/s^2";
+  return "1";  // the volume fractions
+}
+}  // namespace
+
 std::vector<io::FieldView> FlowState::views() const {
   const auto names = field_names();
   const auto all = fields();
@@ -51,7 +62,7 @@ std::vector<io::FieldView> FlowState::views() const {
   for (std::size_t f = 0; f < all.size(); ++f) {
     io::Centering centering = io::Centering::cell;
     if (f >= cell_field_count) centering = face_of[(f - cell_field_count) % 3];
-    out.push_back({names[f], centering, *all[f]});
+    out.push_back({names[f], centering, *all[f], units_of(names[f])});
   }
   return out;
 }

@@ -39,8 +39,8 @@ struct Written {
     for (int l = 0; l < layout.local_count(); ++l)
       values[static_cast<std::size_t>(l)] = value_at(layout.natural(l));
     io::write_snapshot(path, layout, domain.flags,
-                       {{"solids_fraction", io::Centering::cell, values},
-                        {"solids_velocity_x", io::Centering::x_face, values}},
+                       {{"solids_fraction", io::Centering::cell, values, "1"},
+                        {"solids_velocity_x", io::Centering::x_face, values, "m/s"}},
                        {0.25, 12, 1e-3, "test", 2e-3, {1e-3, 8000.0, 11.0}, record});
   }
   // The run's record (src/run/provenance.hpp), with text beyond ASCII.
@@ -108,7 +108,7 @@ TEST(Snapshot, RecordAttributesAreUtf8StringsOrIntegers) {
   const std::string path = file_name("snapshot_record");
   Written w(path);
   EXPECT_EQ(io::read_text_attribute(path, "deck"), std::get<std::string>(Written::record[0].value));
-  EXPECT_EQ(io::read_text_attribute(path, "title"), std::string("test"));  // fixed-length ASCII
+  EXPECT_EQ(io::read_text_attribute(path, "title"), std::string("test"));
   EXPECT_FALSE(io::read_text_attribute(path, "no_such_attribute"));
   EXPECT_THROW(io::read_text_attribute(path + ".missing", "deck"), io::Hdf5Error);
   if (!parallel::Communicator().is_root()) return;
@@ -128,6 +128,29 @@ TEST(Snapshot, RecordAttributesAreUtf8StringsOrIntegers) {
   H5Aclose(ranks);
   H5Tclose(type);
   H5Aclose(deck);
+  // Every text attribute is variable-length UTF-8 (h5py gives str, so attrs["centering"] ==
+  // "x_face" holds), and each field carries its units.
+  auto text_of = [&](const char* object, const char* name) {
+    const hid_t holder = H5Oopen(file, object, H5P_DEFAULT);
+    const hid_t a = H5Aopen(holder, name, H5P_DEFAULT);
+    const hid_t t = H5Aget_type(a);
+    EXPECT_GT(H5Tis_variable_str(t), 0) << object << " " << name;
+    EXPECT_EQ(H5Tget_cset(t), H5T_CSET_UTF8) << object << " " << name;
+    char* text = nullptr;
+    H5Aread(a, t, &text);
+    std::string out = text ? text : "";
+    H5free_memory(text);
+    H5Tclose(t);
+    H5Aclose(a);
+    H5Oclose(holder);
+    return out;
+  };
+  EXPECT_EQ(text_of("/", "title"), "test");
+  EXPECT_FALSE(text_of("/", "bagnold_version").empty());
+  EXPECT_EQ(text_of("fields/solids_velocity_x", "centering"), "x_face");
+  EXPECT_EQ(text_of("fields/solids_fraction", "centering"), "cell");
+  EXPECT_EQ(text_of("fields/solids_velocity_x", "units"), "m/s");
+  EXPECT_EQ(text_of("fields/solids_fraction", "units"), "1");
   H5Fclose(file);
 }
 
@@ -153,7 +176,7 @@ TEST(Snapshot, ReadOntoAnotherRankCountFromASerialFile) {
     std::vector<double> v(static_cast<std::size_t>(serial.layout.local_count()));
     for (int l = 0; l < serial.layout.local_count(); ++l)
       v[static_cast<std::size_t>(l)] = value_at(serial.layout.natural(l));
-    io::write_snapshot(path, serial.layout, serial.flags, {{"p", io::Centering::cell, v}}, {});
+    io::write_snapshot(path, serial.layout, serial.flags, {{"p", io::Centering::cell, v, "Pa"}}, {});
   }
   world.barrier();
   const auto d = deck::load_deck_text(hopper, "hopper.toml");

@@ -3,6 +3,8 @@
 // Run on 1 and 2 ranks: every stored cell, owned or halo, gets the same values.
 #include <gtest/gtest.h>
 
+#include <map>
+
 #include "src/run/initial_state.hpp"
 #include "tests/support/deck_domain.hpp"
 #include "tests/support/test_decks.hpp"
@@ -70,6 +72,21 @@ TEST(InitialState, RegionsInOrderLaterWins) {
     EXPECT_EQ(s.state.solids_velocity[2][i], z < 0.01 ? -1.0 : 0.0);
   }
   EXPECT_GT(fluid, 0);
+}
+
+TEST(FlowState, EverySnapshotFieldHasItsSIUnits) {
+  const run::FlowState state(1);
+  std::map<std::string, std::string> units;
+  for (const auto& view : state.views()) units[view.name] = view.units;
+  EXPECT_EQ(units.size(), run::FlowState::field_names().size());
+  EXPECT_EQ(units["solids_fraction"], "1");
+  EXPECT_EQ(units["gas_fraction"], "1");
+  EXPECT_EQ(units["gas_pressure"], "Pa");
+  EXPECT_EQ(units["solids_pressure"], "Pa");
+  EXPECT_EQ(units["granular_temperature"], "m^2/s^2");
+  EXPECT_EQ(units["pressure_shear_rate"], "1/s");
+  EXPECT_EQ(units["gas_velocity_x"], "m/s");
+  EXPECT_EQ(units["solids_velocity_z"], "m/s");
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <vector>
 #include <utility>
 
 namespace bagnold::solver {
@@ -60,6 +61,9 @@ class PetscSession {
   // PETSc options from the command line ("-log_view -pressure_ksp_monitor"); starts logging
   // when -log_view is among them (PETSc only does so for options given at initialization).
   static void add_options(const std::string& options);
+  // The options (with their values) that nothing has read so far: after a run, the misspelled or
+  // misplaced ones (PETSc's PetscOptionsLeftGet).
+  static std::vector<std::string> unused_options();
   ~PetscSession();
   PetscSession(const PetscSession&) = delete;
   PetscSession& operator=(const PetscSession&) = delete;

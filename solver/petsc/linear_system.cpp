@@ -21,6 +21,18 @@ void PetscSession::add_options(const std::string& options) {
   if (log_view) petsc_check(PetscLogDefaultBegin(), "PetscLogDefaultBegin");
 }
 
+std::vector<std::string> PetscSession::unused_options() {
+  PetscInt count = 0;
+  char** names = nullptr;
+  char** values = nullptr;
+  petsc_check(PetscOptionsLeftGet(nullptr, &count, &names, &values), "PetscOptionsLeftGet");
+  std::vector<std::string> unused;
+  for (PetscInt i = 0; i < count; ++i)
+    unused.push_back("-" + std::string(names[i]) + (values[i] ? " " + std::string(values[i]) : ""));
+  petsc_check(PetscOptionsLeftRestore(nullptr, &count, &names, &values), "PetscOptionsLeftRestore");
+  return unused;
+}
+
 LinearSystem::LinearSystem(MPI_Comm comm, SparsityPattern pattern_in, std::int64_t first_row,
                            const std::string& prefix, const KrylovSettings& settings)
     : m_comm(comm), m_rows(pattern_in.rows()), m_first_row(first_row), m_pattern(std::move(pattern_in)),

@@ -150,6 +150,10 @@ int run_command(const DeckArguments& args) {
     const auto started = std::chrono::steady_clock::now();
     const auto result = run_time_loop(context, flow, state, start.time, start.step, start.dt,
                                       start.time_step_memory);
+    for (const auto& option : solver::PetscSession::unused_options())
+      say("bagnold run: warning: the PETSc option " + option +
+              " was never used (misspelled, or for a solver this run does not have?)",
+          true);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     const double per_step = result.steps ? static_cast<double>(result.outer_iterations) /
                                                static_cast<double>(result.steps)

@@ -109,17 +109,22 @@ long AndersonMixing::mix(run::FlowState& state, double velocity_scale) {
   m_residual.resize(m_image.size());
   for (std::size_t i = 0; i < m_image.size(); ++i) m_residual[i] = m_image[i] - m_input[i];
   if (m_has_last) {
+    // The newest difference goes last; when the history is full it reuses the oldest's storage.
     if (m_delta_f.size() == m_depth) {
-      m_delta_f.erase(m_delta_f.begin());
-      m_delta_g.erase(m_delta_g.begin());
+      std::rotate(m_delta_f.begin(), m_delta_f.begin() + 1, m_delta_f.end());
+      std::rotate(m_delta_g.begin(), m_delta_g.begin() + 1, m_delta_g.end());
+    } else {
+      m_delta_f.emplace_back();
+      m_delta_g.emplace_back();
     }
-    std::vector<double> df(m_image.size()), dg(m_image.size());
+    auto& df = m_delta_f.back();
+    auto& dg = m_delta_g.back();
+    df.resize(m_image.size());
+    dg.resize(m_image.size());
     for (std::size_t i = 0; i < m_image.size(); ++i) {
       df[i] = m_residual[i] - m_last_residual[i];
       dg[i] = m_image[i] - m_last_image[i];
     }
-    m_delta_f.push_back(std::move(df));
-    m_delta_g.push_back(std::move(dg));
   }
   m_last_residual = m_residual;
   m_last_image = m_image;

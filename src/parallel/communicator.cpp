@@ -48,6 +48,13 @@ void Communicator::sum_in_place(double* values, std::size_t count) const {
   MPI_Allreduce(MPI_IN_PLACE, values, static_cast<int>(count), MPI_DOUBLE, MPI_SUM, m_comm);
 }
 
+void Communicator::broadcast(std::string& text, int root) const {
+  long size = static_cast<long>(text.size());
+  MPI_Bcast(&size, 1, MPI_LONG, root, m_comm);
+  text.resize(static_cast<std::size_t>(size));
+  if (size > 0) MPI_Bcast(text.data(), static_cast<int>(size), MPI_CHAR, root, m_comm);
+}
+
 void Communicator::sum_in_place(std::vector<std::int64_t>& values) const {
   MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_INT64_T, MPI_SUM,
                 m_comm);

@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace bagnold::parallel {
@@ -34,6 +35,8 @@ class Communicator {
   void sum_in_place(std::vector<double>& values) const;
   void sum_in_place(double* values, std::size_t count) const;
   void sum_in_place(std::vector<std::int64_t>& values) const;
+  // Every rank gets `root`'s text.
+  void broadcast(std::string& text, int root) const;
   // Exclusive prefix sum of `x` over ranks (0 on rank 0).
   std::int64_t exclusive_scan(std::int64_t x) const;
   std::vector<std::int64_t> all_gather(std::int64_t x) const;

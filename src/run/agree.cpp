@@ -20,10 +20,7 @@ void agree(const parallel::Communicator& comm, const std::function<void()>& acti
   int failed = mine;
   MPI_Allreduce(&mine, &failed, 1, MPI_INT, MPI_MIN, comm.get());
   if (failed == comm.size()) return;
-  long size = static_cast<long>(problem.size());
-  MPI_Bcast(&size, 1, MPI_LONG, failed, comm.get());
-  problem.resize(static_cast<std::size_t>(size));
-  MPI_Bcast(problem.data(), static_cast<int>(size), MPI_CHAR, failed, comm.get());
+  comm.broadcast(problem, failed);
   throw io::Hdf5Error(problem);
 }
 

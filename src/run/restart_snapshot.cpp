@@ -60,25 +60,18 @@ RestartChoice choose_serially(const std::string& file_or_directory) {
   return choice;
 }
 
-// Every rank gets rank 0's strings.
-void broadcast(std::string& text, const parallel::Communicator& comm) {
-  long size = static_cast<long>(text.size());
-  MPI_Bcast(&size, 1, MPI_LONG, 0, comm.get());
-  text.resize(static_cast<std::size_t>(size));
-  if (size > 0) MPI_Bcast(text.data(), static_cast<int>(size), MPI_CHAR, 0, comm.get());
-}
 }  // namespace
 
 RestartChoice choose_restart_snapshot(const std::string& file_or_directory,
                                       const parallel::Communicator& comm) {
   RestartChoice choice;
   if (comm.is_root()) choice = choose_serially(file_or_directory);
-  broadcast(choice.snapshot, comm);
-  broadcast(choice.problem, comm);
+  comm.broadcast(choice.snapshot, 0);
+  comm.broadcast(choice.problem, 0);
   long notes = static_cast<long>(choice.notes.size());
   MPI_Bcast(&notes, 1, MPI_LONG, 0, comm.get());
   choice.notes.resize(static_cast<std::size_t>(notes));
-  for (auto& note : choice.notes) broadcast(note, comm);
+  for (auto& note : choice.notes) comm.broadcast(note, 0);
   return choice;
 }
 

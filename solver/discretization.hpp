@@ -10,11 +10,8 @@
 //                        faces, the − neighbour on its − faces) and the face area; the
 //                        divergence of a face field q is Σ_faces sign · A · q_owner / V;
 //   centre_velocity      component d of a staggered velocity at a cell centre, the mean of the
-//                        cell's two faces along d. Convention at walls and openings: the face
-//                        between a fluid cell and a boundary cell is stored (fixed or solved),
-//                        so the mean is always of two faces there; a − face that is not stored on
-//                        this rank (only beyond the halo, where no result is used) counts as
-//                        the cell's own + face.
+//                        cell's two faces along d, with its convention at walls and openings
+//                        (src/parallel/centre_velocity.hpp; the snapshots' cell vectors use it too).
 
 #include <array>
 #include <memory>
@@ -22,6 +19,7 @@
 #include "solver/sparsity_pattern.hpp"
 #include "solver/unknown_numbering.hpp"
 #include "solver/velocity_faces.hpp"
+#include "src/parallel/centre_velocity.hpp"
 #include "src/parallel/domain.hpp"
 
 namespace bagnold::solver {
@@ -106,10 +104,6 @@ void velocity_divergence(const Discretization& discretization,
                          std::vector<double>& divergence);
 
 // Component d of a staggered velocity field at the centre of local cell l (convention above).
-inline double centre_velocity(const parallel::Layout& layout, const std::vector<double>& u, int l, int d) {
-  const int minus = layout.neighbour(l, 2 * d);
-  const double own = u[static_cast<std::size_t>(l)];
-  return 0.5 * (own + (minus >= 0 ? u[static_cast<std::size_t>(minus)] : own));
-}
+using parallel::centre_velocity;
 
 }  // namespace bagnold::solver

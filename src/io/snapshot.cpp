@@ -51,6 +51,20 @@ void write_utf8_attribute(hid_t object, const char* name, const std::string& val
   check_status(H5Awrite(a.get(), type.get(), &text), "H5Awrite");
 }
 
+// A one-dimensional array of variable-length UTF-8 strings (h5py reads it as an array of str).
+void write_utf8_array_attribute(hid_t object, const char* name, const std::vector<std::string>& values) {
+  Datatype type(check(H5Tcopy(H5T_C_S1), "H5Tcopy"));
+  check_status(H5Tset_size(type.get(), H5T_VARIABLE), "H5Tset_size");
+  check_status(H5Tset_cset(type.get(), H5T_CSET_UTF8), "H5Tset_cset");
+  const hsize_t n = values.size();
+  Dataspace space(check(H5Screate_simple(1, &n, nullptr), "H5Screate_simple"));
+  Attribute a(check(H5Acreate2(object, name, type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
+                    "H5Acreate"));
+  std::vector<const char*> texts;
+  for (const auto& v : values) texts.push_back(v.c_str());
+  if (!texts.empty()) check_status(H5Awrite(a.get(), type.get(), texts.data()), "H5Awrite");
+}
+
 void write_checksum_attribute(hid_t object, std::uint64_t value) {
   Dataspace space(check(H5Screate(H5S_SCALAR), "H5Screate"));
   Attribute a(check(H5Acreate2(object, "checksum", H5T_NATIVE_UINT64, space.get(), H5P_DEFAULT,
@@ -211,6 +225,111 @@ void write_grid(hid_t file, const parallel::Layout& layout, const grid::CellFlag
   }
 }
 
+// The cell vectors, /fields/NAME of shape (nz, ny, nx, 3): this rank's fluid cells, NaN elsewhere,
+// each with its checksum (component fastest in the element index).
+void write_cell_vectors(hid_t field_group, const parallel::Layout& layout, const Placement& placement,
+                        const std::vector<CellVectorView>& vectors) {
+  if (vectors.empty()) return;
+  auto dims = domain_dims(layout.grid());
+  dims.push_back(3);
+  const double fill = std::numeric_limits<double>::quiet_NaN();
+  const std::size_t points = placement.fluid_locals.size();
+  std::vector<hsize_t> coordinates;
+  coordinates.reserve(12 * points);
+  for (std::size_t p = 0; p < points; ++p)
+    for (hsize_t c = 0; c < 3; ++c) {
+      const hsize_t* at = &placement.fluid_coordinates[3 * p];
+      coordinates.insert(coordinates.end(), {at[0], at[1], at[2], c});
+    }
+  std::vector<std::uint64_t> checksums(vectors.size(), 0);
+  std::vector<std::vector<double>> buffers(vectors.size());
+  for (std::size_t v = 0; v < vectors.size(); ++v) {
+    auto& buffer = buffers[v];
+    buffer.reserve(3 * points);
+    for (std::size_t p = 0; p < points; ++p) {
+      const auto l = static_cast<std::size_t>(placement.fluid_locals[p]);
+      const hsize_t* at = &placement.fluid_coordinates[3 * p];
+      for (std::size_t c = 0; c < 3; ++c) {
+        const double value = vectors[v].values[3 * l + c];
+        const std::uint64_t e = ((at[0] * dims[1] + at[1]) * dims[2] + at[2]) * 3 + c;
+        checksums[v] += element_hash(e, value) - element_hash(e, fill);
+        buffer.push_back(value);
+      }
+    }
+  }
+  MPI_Allreduce(MPI_IN_PLACE, checksums.data(), static_cast<int>(checksums.size()), MPI_UINT64_T,
+                MPI_SUM, layout.comm().get());
+  const std::uint64_t base = uniform_checksum(dims[0] * dims[1] * dims[2] * 3, fill);
+  for (std::size_t v = 0; v < vectors.size(); ++v) {
+    Dataset ds = create_dataset(field_group, vectors[v].name, H5T_NATIVE_DOUBLE, dims, &fill);
+    write_utf8_attribute(ds.get(), "centering", centering_name(Centering::cell));
+    if (!vectors[v].units.empty()) write_utf8_attribute(ds.get(), "units", vectors[v].units);
+    transfer_points(ds.get(), H5T_NATIVE_DOUBLE, coordinates, 4, buffers[v].data(), true);
+    write_checksum_attribute(ds.get(), base + checksums[v]);
+  }
+}
+
+// The opening faces, /openings: their geometry (rank 0 writes it whole: it is the same on every
+// rank) and each field's values on the faces each rank owns, with a checksum.
+void write_openings(hid_t file, const parallel::Communicator& comm, const OpeningsView& openings) {
+  const auto& faces = openings.faces;
+  if (faces.empty()) return;
+  Group group(check(H5Gcreate2(file, "openings", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+                    "H5Gcreate openings"));
+  write_utf8_array_attribute(group.get(), "region_names", openings.region_names);
+  const hsize_t n = faces.size();
+  Dataset points = create_dataset(group.get(), "points", H5T_NATIVE_DOUBLE, {4 * n, 3}, nullptr);
+  write_utf8_attribute(points.get(), "units", "m");
+  Dataset quads = create_dataset(group.get(), "quads", H5T_NATIVE_INT32, {n, 4}, nullptr);
+  Dataset region = create_dataset(group.get(), "region", H5T_NATIVE_INT32, {n}, nullptr);
+  if (comm.is_root()) {
+    std::vector<double> xyz;
+    std::vector<std::int32_t> corners, regions;
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+      for (const auto& corner : faces[f].corners) xyz.insert(xyz.end(), corner.begin(), corner.end());
+      for (int c = 0; c < 4; ++c) corners.push_back(static_cast<std::int32_t>(4 * f) + c);
+      regions.push_back(faces[f].region);
+    }
+    check_status(H5Dwrite(points.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, xyz.data()),
+                 "H5Dwrite openings/points");
+    check_status(H5Dwrite(quads.get(), H5T_NATIVE_INT32, H5S_ALL, H5S_ALL, H5P_DEFAULT, corners.data()),
+                 "H5Dwrite openings/quads");
+    check_status(H5Dwrite(region.get(), H5T_NATIVE_INT32, H5S_ALL, H5S_ALL, H5P_DEFAULT, regions.data()),
+                 "H5Dwrite openings/region");
+  }
+  const double fill = std::numeric_limits<double>::quiet_NaN();
+  std::vector<std::uint64_t> checksums(openings.fields.size(), 0);
+  for (std::size_t v = 0; v < openings.fields.size(); ++v) {
+    const auto& field = openings.fields[v];
+    const auto width = static_cast<std::size_t>(field.width);
+    for (std::size_t p = 0; p < openings.owned.size(); ++p)
+      for (std::size_t c = 0; c < width; ++c) {
+        const std::uint64_t e = openings.owned[p] * width + c;
+        checksums[v] += element_hash(e, field.values[p * width + c]) - element_hash(e, fill);
+      }
+  }
+  MPI_Allreduce(MPI_IN_PLACE, checksums.data(), static_cast<int>(checksums.size()), MPI_UINT64_T,
+                MPI_SUM, comm.get());
+  for (std::size_t v = 0; v < openings.fields.size(); ++v) {
+    const auto& field = openings.fields[v];
+    const auto width = static_cast<hsize_t>(field.width);
+    const bool scalar = width == 1;
+    std::vector<hsize_t> dims = {n};
+    if (!scalar) dims.push_back(width);
+    std::vector<hsize_t> coordinates;
+    for (const std::size_t f : openings.owned)
+      for (hsize_t c = 0; c < width; ++c) {
+        coordinates.push_back(f);
+        if (!scalar) coordinates.push_back(c);
+      }
+    Dataset ds = create_dataset(group.get(), field.name, H5T_NATIVE_DOUBLE, dims, &fill);
+    if (!field.units.empty()) write_utf8_attribute(ds.get(), "units", field.units);
+    transfer_points(ds.get(), H5T_NATIVE_DOUBLE, coordinates, scalar ? 1 : 2,
+                    const_cast<double*>(field.values.data()), true);
+    write_checksum_attribute(ds.get(), uniform_checksum(n * width, fill) + checksums[v]);
+  }
+}
+
 // Whether the open snapshot has the dataset /fields/NAME.
 bool has_field(hid_t file, const std::string& name) {
   return H5Lexists(file, "fields", H5P_DEFAULT) > 0 &&
@@ -227,6 +346,12 @@ SnapshotHeader read_snapshot_header(const std::string& path, const std::vector<s
   header.time = read_double_attribute(file.get(), "time");
   for (const auto& name : names)
     if (!has_field(file.get(), name)) header.absent_fields.push_back(name);
+  if (H5Lexists(file.get(), "openings", H5P_DEFAULT) > 0 &&
+      H5Lexists(file.get(), "openings/region", H5P_DEFAULT) > 0) {
+    Dataset ds(check(H5Dopen2(file.get(), "openings/region", H5P_DEFAULT), "openings/region"));
+    Dataspace space(check(H5Dget_space(ds.get()), "H5Dget_space"));
+    header.opening_faces = static_cast<std::size_t>(H5Sget_simple_extent_npoints(space.get()));
+  }
   return header;
 }
 
@@ -268,7 +393,9 @@ const char* centering_name(Centering c) {
 }
 
 std::uintmax_t snapshot_size_estimate(const parallel::Layout& layout, const grid::CellFlags& flags,
-                                      std::size_t field_count, const SnapshotInfo& info) {
+                                      std::size_t field_count, const SnapshotInfo& info,
+                                      std::size_t vector_count, std::size_t opening_faces,
+                                      std::size_t opening_values) {
   const auto& g = layout.grid();
   const auto cells = static_cast<std::uintmax_t>(g.domain_cell_count());
   const auto boundary = static_cast<std::uintmax_t>(std::max<std::int64_t>(flags.boundary_count, 1));
@@ -277,14 +404,18 @@ std::uintmax_t snapshot_size_estimate(const parallel::Layout& layout, const grid
   for (const auto& r : info.record)
     attributes += r.name.size() + 32 +
                   (std::holds_alternative<std::string>(r.value) ? std::get<std::string>(r.value).size() : 8);
-  const std::uintmax_t datasets = 2 * field_count + 5;  // fields, their boundary values, grid
-  return field_count * (cells + boundary) * 8 + cells + boundary * 8 + faces * 8 + attributes +
-         2048 * datasets + 4096;
+  // fields and their boundary values, the grid, the vectors, the openings' geometry and values
+  const std::uintmax_t datasets = 2 * field_count + 5 + vector_count + (opening_faces > 0 ? 4 : 0) +
+                                  (opening_faces > 0 ? opening_values : 0);
+  // per opening face: 4 corners of 3 doubles, 4 corner numbers and a region (int32), its values
+  const std::uintmax_t openings = opening_faces * (96 + 20 + 8 * opening_values) + 1024;
+  return field_count * (cells + boundary) * 8 + vector_count * cells * 24 + cells + boundary * 8 +
+         faces * 8 + attributes + (opening_faces > 0 ? openings : 0) + 2048 * datasets + 4096;
 }
 
 void write_snapshot(const std::string& path, const parallel::Layout& layout,
                     const grid::CellFlags& flags, const std::vector<FieldView>& fields,
-                    const SnapshotInfo& info) {
+                    const SnapshotInfo& info, const ViewingData& viewing) {
   const std::string temporary = path + ".tmp";
   const auto& comm = layout.comm();
   const Placement placement = place_cells(layout, flags, false);
@@ -363,6 +494,8 @@ void write_snapshot(const std::string& path, const parallel::Layout& layout,
       write_checksum_attribute(bs.get(), boundary_base + checksums[2 * index + 1]);
       ++index;
     }
+    write_cell_vectors(field_group.get(), layout, placement, viewing.cell_vectors);
+    write_openings(file.get(), comm, viewing.openings);
     check_status(H5Fflush(file.get(), H5F_SCOPE_GLOBAL), "H5Fflush");
   } catch (const Hdf5Error& e) {
     // The final name is never touched: earlier snapshots stay as they were.

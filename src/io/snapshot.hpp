@@ -10,8 +10,11 @@
 //   /fields/NAME         float64 (nz, ny, nx); value on fluid cells, NaN (the fill value) on
 //                        every other cell; attribute `centering`: cell | x_face | y_face | z_face
 //                        (a face field holds the east/north/top face of each cell)
+//                        a cell vector (CellVectorView) is float64 (nz, ny, nx, 3), for viewing
 //   /boundary/natural    int64: natural indices of the boundary cells (extended box, x fastest)
 //   /boundary/NAME       float64: the field on those boundary cells (restart needs them)
+//   /openings/           the faces of the boundary openings (grid/opening_faces.hpp), for
+//                        viewing: points (4 per face), quads, region, and NAME per face
 // The file is written as NAME.tmp and renamed when complete, so a crash never leaves a torn
 // snapshot under its final name.
 
@@ -23,6 +26,7 @@
 #include <vector>
 
 #include "src/grid/cell_flags.hpp"
+#include "src/grid/opening_faces.hpp"
 #include "src/io/io_error.hpp"
 #include "src/parallel/layout.hpp"
 
@@ -36,6 +40,39 @@ struct FieldView {
   Centering centering = Centering::cell;
   std::span<const double> values;  // local_count() entries (owned and halo)
   std::string units;               // SI, as the dataset's `units` attribute ("1": dimensionless)
+};
+
+// A cell-centred vector for viewing (ParaView's glyphs and stream lines take it as it is): 3
+// values per local cell (x, y, z), written on the fluid cells as /fields/NAME of shape
+// (nz, ny, nx, 3), NaN elsewhere; attributes centering "cell", units, checksum. Never read back.
+struct CellVectorView {
+  std::string name;
+  std::span<const double> values;  // 3 × local_count() entries, component fastest
+  std::string units;
+};
+
+// Values on the opening faces for viewing: /openings/NAME, `width` values per face (shape
+// (faces) or (faces, width)). Never read back.
+struct OpeningFieldView {
+  std::string name;
+  int width = 1;               // 1: a scalar; 3: a vector
+  std::vector<double> values;  // `width` per face of OpeningsView::owned, in that order
+  std::string units;
+};
+
+// The opening faces (the same list on every rank), the ones this rank writes the values of
+// (those whose owner cell it owns), and their fields.
+struct OpeningsView {
+  std::vector<grid::OpeningFace> faces;
+  std::vector<std::size_t> owned;  // ordinals into `faces`
+  std::vector<OpeningFieldView> fields;
+  std::vector<std::string> region_names;  // of every boundary region, by index (attribute)
+};
+
+// What a snapshot carries only to be looked at: derived from the fields, never read back.
+struct ViewingData {
+  std::vector<CellVectorView> cell_vectors;
+  OpeningsView openings;
 };
 
 // A root attribute naming how the run was made: a variable-length UTF-8 string or an int64.
@@ -58,25 +95,31 @@ struct SnapshotInfo {
 struct SnapshotHeader {
   double time = 0.0;                       // [s] when the snapshot was written
   std::vector<std::string> absent_fields;  // of the names asked about, those it has no field for
+  std::size_t opening_faces = 0;           // faces in /openings (0: none, or written before it)
 };
-// A snapshot's time and which of `names` it lacks (rank-local, serial read); throws when
-// unreadable.
+// A snapshot's time, which of `names` it lacks and how many opening faces it holds (rank-local,
+// serial read); throws when unreadable.
 SnapshotHeader read_snapshot_header(const std::string& path, const std::vector<std::string>& names);
 
 // A string attribute of the snapshot's root (rank-local, serial read); nothing when the snapshot
 // has no such attribute (written before it existed). Throws when the file is unreadable.
 std::optional<std::string> read_text_attribute(const std::string& path, const std::string& name);
 
-// About how many bytes write_snapshot writes for `field_count` fields, from above: the arrays,
-// the grid, the attributes, and 2 KiB of HDF5 metadata per dataset (its metadata block; measured
-// 0.7-1.5 KiB). For checking that the disk has room before writing (run/output_writer.hpp).
+// About how many bytes write_snapshot writes for `field_count` fields and `vector_count` cell
+// vectors and `opening_faces` opening faces (with `opening_values` values per face), from above:
+// the arrays, the grid, the attributes, and 2 KiB of HDF5 metadata per dataset (its metadata
+// block; measured 0.7-1.5 KiB). For checking that the disk has room before writing
+// (run/output_writer.hpp).
 std::uintmax_t snapshot_size_estimate(const parallel::Layout& layout, const grid::CellFlags& flags,
-                                      std::size_t field_count, const SnapshotInfo& info);
+                                      std::size_t field_count, const SnapshotInfo& info,
+                                      std::size_t vector_count = 0, std::size_t opening_faces = 0,
+                                      std::size_t opening_values = 0);
 
-// Collective: every rank calls with the same field names in the same order.
+// Collective: every rank calls with the same field names in the same order (and the same
+// viewing data names and opening faces).
 void write_snapshot(const std::string& path, const parallel::Layout& layout,
                     const grid::CellFlags& flags, const std::vector<FieldView>& fields,
-                    const SnapshotInfo& info);
+                    const SnapshotInfo& info, const ViewingData& viewing = {});
 
 struct SnapshotContents {
   SnapshotInfo info;

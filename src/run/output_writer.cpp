@@ -18,6 +18,7 @@ OutputWriter::OutputWriter(const deck::Deck& deck, const parallel::Domain& domai
       m_directory(deck.output.directory),
       m_title(deck.run.title),
       m_record(std::move(record)),
+      m_viewing(domain),
       m_interval(deck.output.snapshot_interval) {
   const auto& comm = domain.layout.comm();
   std::string problem;
@@ -48,7 +49,10 @@ void OutputWriter::check_room(const std::string& path, const io::SnapshotInfo& i
     const std::uintmax_t needed =
         m_largest > 0 ? m_largest + 8192
                       : io::snapshot_size_estimate(m_domain.layout, m_domain.flags,
-                                                   FlowState::field_names().size(), info);
+                                                   FlowState::field_names().size(), info,
+                                                   ViewingFields::cell_vector_names().size(),
+                                                   m_viewing.opening_face_count(),
+                                                   ViewingFields::opening_values_per_face());
     std::error_code ec;
     const auto space = fs::space(m_directory, ec);
     if (!ec && space.available < needed)
@@ -71,7 +75,7 @@ std::string OutputWriter::write_diagnostic(const FlowState& state, double time, 
   const std::string path = (fs::path(m_directory) / "diagnostic.h5").string();
   const io::SnapshotInfo info{time, step, dt, m_title + " (diagnostic: a step that failed)", dt, {}, m_record};
   check_room(path, info);
-  io::write_snapshot(path, m_domain.layout, m_domain.flags, state.views(), info);
+  io::write_snapshot(path, m_domain.layout, m_domain.flags, state.views(), info, m_viewing.of(state));
   return path;
 }
 
@@ -81,7 +85,8 @@ void OutputWriter::resume(double time) {
   // `time`, and numbering continues after the last kept, so no kept snapshot is overwritten.
   // Every rank reads the directory; all stop together if one cannot, or if they disagree.
   const auto& comm = m_domain.layout.comm();
-  const auto fields = FlowState::field_names();
+  auto fields = FlowState::field_names();
+  for (const auto& name : ViewingFields::cell_vector_names()) fields.push_back(name);
   std::string problem;
   m_index.clear();
   m_next_number = 0;
@@ -98,7 +103,7 @@ void OutputWriter::resume(double time) {
         continue;
       }
       if (header.time > time * (1 + 1e-12) + 1e-300) break;
-      m_index.push_back({name, header.time, std::move(header.absent_fields)});
+      m_index.push_back({name, header.time, std::move(header.absent_fields), header.opening_faces});
       m_next_number = n + 1;
     }
   } catch (const std::exception& e) {  // io::Hdf5Error, or the file system's
@@ -121,13 +126,13 @@ std::string OutputWriter::write(const FlowState& state, double time, long step, 
   const std::string path = (fs::path(m_directory) / name).string();
   const io::SnapshotInfo info{time, step, dt, m_title, dt_next, time_step_memory, m_record};
   check_room(path, info);
-  io::write_snapshot(path, m_domain.layout, m_domain.flags, state.views(), info);
+  io::write_snapshot(path, m_domain.layout, m_domain.flags, state.views(), info, m_viewing.of(state));
   note_size(path);
-  m_index.push_back({name, time, {}});
+  m_index.push_back({name, time, {}, m_viewing.opening_face_count()});
   agree(m_domain.layout.comm(), [&] {
     if (m_domain.layout.comm().is_root())
       io::write_file_atomically((fs::path(m_directory) / "run.xmf").string(),
-                                io::xdmf_text(m_domain.grid, m_index, FlowState::field_names()));
+                                io::xdmf_text(m_domain.grid, m_index, ViewingFields::indexed_fields()));
   });
   while (m_next_time <= time * (1 + 1e-12)) m_next_time += m_interval;
   return path;

@@ -11,6 +11,7 @@
 #include "src/io/xdmf.hpp"
 #include "src/parallel/domain.hpp"
 #include "src/run/flow_state.hpp"
+#include "src/run/viewing_fields.hpp"
 
 namespace bagnold::run {
 
@@ -52,6 +53,7 @@ class OutputWriter {
   std::string m_directory;
   std::string m_title;
   std::vector<io::RecordAttribute> m_record;
+  ViewingFields m_viewing;  // the cell vectors and opening faces each snapshot carries
   double m_interval;
   double m_next_time = 0.0;
   std::vector<io::IndexedSnapshot> m_index;

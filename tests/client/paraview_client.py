@@ -7,7 +7,7 @@ Runs DECK for a few steps into RUN_DIR, reads what its snapshots hold with h5py,
 RUN_DIR/run.xmf in pvpython (under xvfb-run -a) with check_in_paraview.py, which checks the
 bounds, the time steps, the fields, the cell-centred velocity vectors (components and
 magnitudes against the h5py reads) and the openings' face velocities, and renders a slice to
-PNG. Exits 77 (CTest's SKIP_RETURN_CODE) with a message when pvpython or xvfb-run is missing.
+PNG (the packed fill must show in it). Exits 77 (CTest's SKIP_RETURN_CODE) with a message when pvpython or xvfb-run is missing.
 """
 import glob
 import json
@@ -71,14 +71,25 @@ def main():
     if result.returncode != 0:
         print(f"FAIL: pvpython exited with {result.returncode}")
         return 1
-    if not os.path.exists(png) or os.path.getsize(png) < 10000:
+    if not os.path.exists(png) or os.path.getsize(png) < 4000:
         print(f"FAIL: {png} missing or too small to show the slice")
         return 1
     with open(png, "rb") as f:
         if f.read(8) != b"\x89PNG\r\n\x1a\n":
             print(f"FAIL: {png} is not a PNG")
             return 1
-    print(f"{png}: {os.path.getsize(png)} bytes")
+    import matplotlib.image
+    pixels = matplotlib.image.imread(png)[:, :, :3]
+    # The packed fill (ε_s ≈ 0.58, the top of the 0-0.6 range) shows dark red, the empty upper
+    # bin (0) dark blue; the slender bin covers about 2 % of the picture.
+    red = (pixels[:, :, 0] > 0.45) & (pixels[:, :, 1] < 0.25) & (pixels[:, :, 2] < 0.25)
+    blue = (pixels[:, :, 2] > 0.45) & (pixels[:, :, 0] < 0.3) & (pixels[:, :, 1] < 0.3)
+    if red.mean() < 0.003 or blue.mean() < 0.003:
+        print(f"FAIL: {png} does not show the fill and the empty bin above it "
+              f"({100 * red.mean():.2f} % red, {100 * blue.mean():.2f} % blue pixels)")
+        return 1
+    print(f"{png}: {os.path.getsize(png)} bytes, {100 * red.mean():.2f} % of it the packed fill, "
+          f"{100 * blue.mean():.2f} % the empty bin")
     return 0
 
 

@@ -21,12 +21,17 @@ enum class FrustumSide { inside, outside, beyond_ends };
 FrustumSide frustum_side(const Point& x, const Point& base, const Point& axis, double length,
                          double radius, double top_radius);
 
-// One piece of a piecewise quadric wall, as MFIX's cut-cell quadrics (quadric_surface in the
-// user guide's "Cartesian grid" chapter) describe a hopper: the implicit function
+// One piece of a piecewise quadric wall, the form in which MFIX's cut-cell geometry describes
+// its hoppers (its 2-D hourglass is a hyperbola between two circles): the implicit function
 //   f(x) = (x − c)ᵀ A (x − c) + bᵀ (x − c) + f0,
 // inside where f < 0, valid where lower ≤ x[along] ≤ upper. Pieces over adjacent ranges make
 // one wall; where two pieces meet tangentially, f = 0 at the same points on the joint plane and
 // the normals ∇f agree in direction.
+// Why quadrics rather than an extruded width profile w(z): they write MFIX's walls exactly (the
+// same three formulas, no tabulated approximation), they are 3-D (a full A gives cones,
+// cylinders, spheres and hyperboloids along any axis, so one shape serves 2-D and 3-D hoppers),
+// and f with ∇f is what a cut-cell code needs: the wall's crossing of a cell edge (f = 0) and its
+// normal.
 struct QuadricPiece {
   Point centre{0, 0, 0};
   std::array<double, 9> matrix{};  // A, row by row

@@ -42,7 +42,7 @@ struct Grid {
 
 // A primitive that blocks cells (their centres) inside or outside of it.
 struct Block {
-  std::string shape;  // box | half_space | cylinder | cone
+  std::string shape;  // box | half_space | cylinder | cone | quadric
   std::string blocks = "inside";  // inside | outside
   std::array<double, 3> min{0, 0, 0}, max{0, 0, 0};       // box [m]
   std::array<double, 3> point{0, 0, 0}, normal{0, 0, 1};  // half_space: blocks where (x−p)·n > 0
@@ -50,6 +50,14 @@ struct Block {
   double length = 0.0;      // [m] along the axis from the base
   double radius = 0.0;      // [m] at the base
   double top_radius = 0.0;  // [m] at base + length (cone only)
+  // quadric: f(x) = (x−c)ᵀA(x−c) + bᵀ(x−c) + f0, inside where f < 0, over range[0] ≤ x_along ≤
+  // range[1] only (one piece of a piecewise wall; src/grid/shapes.hpp).
+  std::array<double, 3> centre{0, 0, 0};  // c [m]
+  std::vector<double> matrix;             // A [1/m²]: 3 entries (diagonal) or 9 (row by row)
+  std::array<double, 3> linear{0, 0, 0};  // b [1/m]
+  double constant = 0.0;                  // f0 [-]
+  std::string along = "z";                // x | y | z: the coordinate `range` limits
+  std::vector<double> range;              // [m] [lower, upper]
 };
 
 struct Geometry {

@@ -259,6 +259,21 @@ void read_grid(const toml::table& root, Deck& deck, Diagnostics& diag) {
   }
 }
 
+// A quadric's matrix has 3 entries (the diagonal) or 9 (row by row); its range is [lower, upper].
+void check_quadric(const toml::table& table, const Block& block, const std::string& path,
+                   Diagnostics& diag) {
+  const toml::node* matrix = table.get("matrix");
+  if (matrix && !block.matrix.empty() && block.matrix.size() != 3 && block.matrix.size() != 9)
+    diag.error(matrix->source(), path + ".matrix",
+               "expected 3 entries (the diagonal of A) or 9 (A row by row), got " +
+                   std::to_string(block.matrix.size()));
+  const toml::node* range = table.get("range");
+  if (range && !block.range.empty() &&
+      (block.range.size() != 2 || !(block.range[0] < block.range[1])))
+    diag.error(range->source(), path + ".range",
+               "expected [lower, upper] with lower < upper, got " + node_text(*range));
+}
+
 void check_blocks(const toml::table& root, Deck& deck, Diagnostics& diag) {
   const auto* geometry = root.get_as<toml::table>("geometry");
   const auto* array = geometry ? geometry->get_as<toml::array>("block") : nullptr;
@@ -268,8 +283,9 @@ void check_blocks(const toml::table& root, Deck& deck, Diagnostics& diag) {
     const std::string path = "geometry.block[" + std::to_string(i) + "]";
     const auto needed = block_shape_keys(deck.geometry.blocks[i].shape);
     if (needed.empty()) continue;  // bad shape already reported
+    const auto optional = block_shape_optional_keys(deck.geometry.blocks[i].shape);
     for (const auto& name : needed)
-      if (!table->get(name))
+      if (!table->get(name) && std::find(optional.begin(), optional.end(), name) == optional.end())
         diag.error(table->source(), path + "." + name,
                    "missing key required by shape \"" + deck.geometry.blocks[i].shape + "\"");
     for (const auto& [k, node] : *table) {
@@ -280,6 +296,8 @@ void check_blocks(const toml::table& root, Deck& deck, Diagnostics& diag) {
                    "does not apply to shape \"" + deck.geometry.blocks[i].shape +
                        "\" (its keys: " + join(needed) + ")");
     }
+    if (deck.geometry.blocks[i].shape == "quadric")
+      check_quadric(*table, deck.geometry.blocks[i], path, diag);
   }
 }
 
@@ -720,7 +738,7 @@ scale); a box includes its faces.
 
 - `[[geometry.block]]` makes solid each domain cell whose centre lies inside its shape
   (`blocks = "inside"`) or outside it (`blocks = "outside"`; for a cylinder or cone, around it
-  between its end planes). Blocked cells next to fluid become boundary cells; the others are not
+  between its end planes; for a quadric, where f ≥ 0 within its range). Blocked cells next to fluid become boundary cells; the others are not
   stored.
 - `[[boundary]]` selects boundary cells: the layer of cells just outside each domain face that is
   not periodic (one cell thick, edges and corners included), and the blocked cells next to fluid
@@ -773,7 +791,12 @@ std::string key_reference_markdown() {
   reference_section(s, geometry_section(), "`[geometry]`");
   reference_section(s, block_section(), "`[[geometry.block]]`");
   s << "\nKeys per shape: box: min, max; half_space: point, normal; cylinder: base, axis, length,"
-       " radius; cone: base, axis, length, radius, top_radius.\n";
+       " radius; cone: base, axis, length, radius, top_radius; quadric: matrix, constant, along,"
+       " range (and optionally centre, linear).\n\n"
+       "A quadric block is one piece of a curved wall: f(x) = (x−c)ᵀA(x−c) + bᵀ(x−c) + f0, inside"
+       " where f < 0, acting only where range[0] ≤ x_along ≤ range[1]. A wall of several pieces"
+       " (a hopper's hyperbola between two circles, cases/hourglass/mfix-hourglass.toml) is one"
+       " block per piece, each `blocks = \"outside\"` over its own range.\n";
   reference_section(s, boundary_section(), "`[[boundary]]`");
   reference_section(s, gas_section(), "`[gas]`");
   auto solids = solids_switch_section().infos();

@@ -71,10 +71,12 @@ const Section<Geometry>& geometry_section() {
 
 const Section<Block>& block_section() {
   static const Section<Block> s{"geometry.block", "Blocking primitives ([[geometry.block]])", {
-      key(&Block::shape, "shape").required().one_of({"box", "half_space", "cylinder", "cone"})
+      key(&Block::shape, "shape").required()
+          .one_of({"box", "half_space", "cylinder", "cone", "quadric"})
           .doc("Primitive; a cell is blocked when its centre is inside (or outside) it."),
       key(&Block::blocks, "blocks").init().one_of({"inside", "outside"})
-          .doc("Which side is solid; for cylinder/cone, outside means around it between its ends."),
+          .doc("Which side is solid; for cylinder/cone, outside means around it between its ends; "
+               "for quadric, f ≥ 0 within its range."),
       key(&Block::min, "min").unit("m").doc("box: lower corner."),
       key(&Block::max, "max").unit("m").doc("box: upper corner."),
       key(&Block::point, "point").unit("m").doc("half_space: a point on the plane."),
@@ -86,6 +88,16 @@ const Section<Block>& block_section() {
       key(&Block::radius, "radius").unit("m").above(0.0).doc("cylinder, cone: radius at the base."),
       key(&Block::top_radius, "top_radius").unit("m").at_least(0.0)
           .doc("cone: radius at base + length along the axis."),
+      key(&Block::centre, "centre").unit("m")
+          .doc("quadric: the point c of f = (x−c)ᵀA(x−c) + bᵀ(x−c) + f0 (optional, default 0)."),
+      key(&Block::matrix, "matrix").unit("1/m^2")
+          .doc("quadric: A, 3 entries (its diagonal) or 9 (row by row)."),
+      key(&Block::linear, "linear").unit("1/m").doc("quadric: b (optional, default 0)."),
+      key(&Block::constant, "constant").unit("-").doc("quadric: f0; inside is where f < 0."),
+      key(&Block::along, "along").one_of({"x", "y", "z"})
+          .doc("quadric: the coordinate its range limits (one piece of a piecewise wall)."),
+      key(&Block::range, "range").unit("m")
+          .doc("quadric: [lower, upper] of that coordinate; the block acts only there."),
   }};
   return s;
 }
@@ -95,6 +107,12 @@ std::vector<std::string> block_shape_keys(const std::string& shape) {
   if (shape == "half_space") return {"point", "normal"};
   if (shape == "cylinder") return {"base", "axis", "length", "radius"};
   if (shape == "cone") return {"base", "axis", "length", "radius", "top_radius"};
+  if (shape == "quadric") return {"centre", "matrix", "linear", "constant", "along", "range"};
+  return {};
+}
+
+std::vector<std::string> block_shape_optional_keys(const std::string& shape) {
+  if (shape == "quadric") return {"centre", "linear"};
   return {};
 }
 

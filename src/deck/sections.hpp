@@ -24,5 +24,7 @@ const Section<Output>& output_section();
 
 // Keys of each block shape, beyond `shape` and `blocks`.
 std::vector<std::string> block_shape_keys(const std::string& shape);
+// Those of block_shape_keys(shape) a deck may leave out (the member's initializer applies).
+std::vector<std::string> block_shape_optional_keys(const std::string& shape);
 
 }  // namespace bagnold::deck

@@ -604,10 +604,44 @@ TEST(DeckErrors, BlockShapeKeyNotApplicable) {
   EXPECT_TRUE(contains(e.message, "point, normal")) << e.message;
 }
 
+TEST(DeckErrors, QuadricMatrixAndRangeAreChecked) {
+  const std::string text = deck_text(
+      "[[geometry.block]]\nshape = \"quadric\"\nblocks = \"outside\"\n"
+      "matrix = [1.0, 1.0, 1.0, 1.0]\nconstant = -0.25\nalong = \"z\"\nrange = [0.5, 0.2]\n");
+  const auto errors = errors_of(text);
+  ASSERT_EQ(errors.size(), 2u) << report_of(errors);
+  const auto m = error_on(errors, "geometry.block[0].matrix");
+  EXPECT_EQ(m.line, line_of(text, "matrix"));
+  EXPECT_TRUE(contains(m.message, "3 entries (the diagonal of A) or 9")) << m.message;
+  const auto r = error_on(errors, "geometry.block[0].range");
+  EXPECT_EQ(r.line, line_of(text, "range"));
+  EXPECT_TRUE(contains(r.message, "lower < upper")) << r.message;
+}
+
+TEST(DeckErrors, QuadricNeedsARangeButNotACentre) {
+  const std::string text = deck_text(
+      "[[geometry.block]]\nshape = \"quadric\"\nmatrix = [1.0, 1.0, 1.0]\n"
+      "constant = -0.25\nalong = \"z\"\n");
+  const auto errors = errors_of(text);
+  ASSERT_EQ(errors.size(), 1u) << report_of(errors);
+  const auto e = error_on(errors, "geometry.block[0].range");
+  EXPECT_TRUE(contains(e.message, "missing key required by shape \"quadric\"")) << e.message;
+  const auto d = deck::load_deck_text(deck_text(
+      "[[geometry.block]]\nshape = \"quadric\"\nmatrix = [4.0, 4.0, 4.0]\n"
+      "constant = -1.0\nalong = \"x\"\nrange = [0.0, 1.0]\nlinear = [0.0, 0.0, 1.0]\n"), "d");
+  ASSERT_EQ(d.geometry.blocks.size(), 1u);
+  const auto& b = d.geometry.blocks[0];
+  EXPECT_EQ(b.centre, (std::array<double, 3>{0.0, 0.0, 0.0}));
+  EXPECT_EQ(b.linear, (std::array<double, 3>{0.0, 0.0, 1.0}));
+  EXPECT_EQ(b.matrix, (std::vector<double>{4.0, 4.0, 4.0}));
+  EXPECT_EQ(b.along, "x");
+  EXPECT_EQ(b.range, (std::vector<double>{0.0, 1.0}));
+}
+
 TEST(DeckErrors, BlockUnknownShape) {
   const std::string text = deck_text("[[geometry.block]]\nshape = \"sphere\"\nradius = 1.0\n");
   const auto e = error_on(errors_of(text), "geometry.block[0].shape");
-  EXPECT_TRUE(contains(e.message, "one of: box, half_space, cylinder, cone")) << e.message;
+  EXPECT_TRUE(contains(e.message, "one of: box, half_space, cylinder, cone, quadric")) << e.message;
 }
 
 TEST(DeckErrors, DuplicateBoundaryNames) {

@@ -125,6 +125,102 @@ TEST(Shapes, ConeBlocksOutsideOnlyBetweenItsEnds) {
   EXPECT_FALSE(grid::blocks_point(c, {0.5, 0.5, 1.1}));
 }
 
+// The pieces of MFIX's hourglass wall (cases/hourglass/mfix-hourglass.toml): a hyperbola
+// 1600 (x−0.1)² − 1500 (z−0.2)² − 1 between two circles of radius 0.1 m.
+constexpr double lower_joint = 0.128158, upper_joint = 0.271842;
+grid::QuadricPiece hourglass_throat() {
+  grid::QuadricPiece q;
+  q.centre = {0.10, 0.0, 0.20};
+  q.matrix = {1600.0, 0, 0, 0, 0, 0, 0, 0, -1500.0};
+  q.constant = -1.0;
+  q.lower = lower_joint;
+  q.upper = upper_joint;
+  return q;
+}
+grid::QuadricPiece hourglass_circle(double centre_z, double lower, double upper) {
+  grid::QuadricPiece q;
+  q.centre = {0.10, 0.0, centre_z};
+  q.matrix = {1.0, 0, 0, 0, 0, 0, 0, 0, 1.0};
+  q.constant = -0.01;
+  q.lower = lower;
+  q.upper = upper;
+  return q;
+}
+
+TEST(Shapes, QuadricIsInsideWhereItsFunctionIsNegative) {
+  const auto throat = hourglass_throat();
+  EXPECT_NEAR(throat.value({0.10, 0.005, 0.20}), -1.0, 1e-12);
+  EXPECT_LT(throat.value({0.124, 0.0, 0.20}), 0.0);  // the throat's half width is 2.5 cm
+  EXPECT_GT(throat.value({0.126, 0.0, 0.20}), 0.0);
+  EXPECT_NEAR(throat.value({0.125, 0.0, 0.20}), 0.0, 1e-12);
+  EXPECT_LT(throat.value({0.17, 0.0, 0.27}), 0.0);  // half width 7.39 cm at the joint
+  EXPECT_GT(throat.value({0.18, 0.0, 0.27}), 0.0);
+  // ∇f = (A + Aᵀ)(x − c) + b: (3200 (x − 0.1), 0, −3000 (z − 0.2)).
+  const auto g = throat.gradient({0.125, 0.0, 0.21});
+  EXPECT_NEAR(g[0], 80.0, 1e-9);
+  EXPECT_NEAR(g[1], 0.0, 1e-12);
+  EXPECT_NEAR(g[2], -30.0, 1e-9);
+  // A circle's f / |∇f| is (r² − R²) / 2r: the distance to first order, exact on the wall.
+  const auto circle = hourglass_circle(0.339194, upper_joint, 0.40);
+  EXPECT_NEAR(circle.distance_estimate({0.19, 0.0, 0.339194}), (0.0081 - 0.01) / 0.18, 1e-12);
+  EXPECT_NEAR(circle.distance_estimate({0.20, 0.0, 0.339194}), 0.0, 1e-12);
+  const double at_centre = circle.distance_estimate({0.10, 0.0, 0.339194});  // ∇f = 0
+  EXPECT_TRUE(std::isinf(at_centre) && at_centre < 0.0);  // −∞ inside, not NaN
+}
+
+TEST(Shapes, QuadricBlockActsOnlyOverItsRange) {
+  deck::Block b;
+  b.shape = "quadric";
+  b.blocks = "outside";
+  b.centre = {0.10, 0.0, 0.20};
+  b.matrix = {1600.0, 0.0, -1500.0};  // the diagonal
+  b.constant = -1.0;
+  b.along = "z";
+  b.range = {lower_joint, upper_joint};
+  EXPECT_FALSE(grid::blocks_point(b, {0.10, 0.0, 0.20}));  // the throat's axis: fluid
+  EXPECT_TRUE(grid::blocks_point(b, {0.01, 0.0, 0.20}));   // beside the throat: solid
+  EXPECT_TRUE(grid::blocks_point(b, {0.1251, 0.0, 0.20}));  // just beyond the wall: solid
+  EXPECT_FALSE(grid::blocks_point(b, {0.01, 0.0, 0.30}));  // beyond the range: not this block's
+  EXPECT_FALSE(grid::blocks_point(b, {0.01, 0.0, 0.10}));
+  b.blocks = "inside";
+  EXPECT_TRUE(grid::blocks_point(b, {0.10, 0.0, 0.20}));
+  EXPECT_FALSE(grid::blocks_point(b, {0.01, 0.0, 0.20}));
+  EXPECT_FALSE(grid::blocks_point(b, {0.10, 0.0, 0.30}));
+  // 9 entries are A row by row; a diagonal one gives the same quadric as its 3 entries.
+  const auto diagonal = grid::quadric_of(b);
+  b.matrix = {1600.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1500.0};
+  const auto full = grid::quadric_of(b);
+  EXPECT_EQ(diagonal.matrix, full.matrix);
+  EXPECT_EQ(full.along, 2);
+  b.along = "x";
+  EXPECT_EQ(grid::quadric_of(b).along, 0);
+}
+
+TEST(Shapes, MfixHourglassPiecesMeetTangentiallyAtTheJoints) {
+  const auto throat = hourglass_throat();
+  const auto upper = hourglass_circle(0.339194, upper_joint, 0.40);
+  const auto lower = hourglass_circle(0.060806, 0.0, lower_joint);
+  for (const auto& [circle, z] : {std::pair{upper, upper_joint}, std::pair{lower, lower_joint}}) {
+    // The wall's half width on the joint plane, from each piece's f = 0.
+    const double dz_throat = z - 0.20, dz_circle = z - circle.centre[2];
+    const double half_width_throat = std::sqrt((1.0 + 1500.0 * dz_throat * dz_throat) / 1600.0);
+    const double half_width_circle = std::sqrt(0.01 - dz_circle * dz_circle);
+    EXPECT_NEAR(half_width_throat, half_width_circle, 2e-6) << "z = " << z;
+    const Point wall{0.10 + half_width_throat, 0.0, z};
+    EXPECT_NEAR(throat.value(wall), 0.0, 1e-12);
+    EXPECT_NEAR(circle.value(wall), 0.0, 1e-6);
+    EXPECT_TRUE(throat.in_range(wall) && circle.in_range(wall));
+    // Tangency: the two normals are parallel (their cross product's y component vanishes).
+    const auto a = throat.gradient(wall), b = circle.gradient(wall);
+    const double sine = (a[2] * b[0] - a[0] * b[2]) /
+                        (std::hypot(a[0], a[2]) * std::hypot(b[0], b[2]));
+    EXPECT_NEAR(sine, 0.0, 1e-4) << "z = " << z;
+    EXPECT_GT(a[0] * b[0] + a[2] * b[2], 0.0);  // and point the same way (out of the fluid)
+    // The wall's slope dx/dz there: 0.9112 outward above the throat, inward below it.
+    EXPECT_NEAR(std::abs(-a[2] / a[0]), 0.9112, 1e-4);
+  }
+}
+
 // ---------------------------------------------------------------------------------------------
 // Cell classification
 
@@ -387,6 +483,37 @@ TEST(CellFlags, HourglassBlocksAroundItsChambersAndHopper) {
   EXPECT_EQ(c.kind(c.cell_at({0.05, 0.05, 0.11})), CellKind::fluid);  // the orifice
   EXPECT_EQ(c.kind(c.cell_at({0.07, 0.05, 0.09})), CellKind::fluid);  // below the hopper
   EXPECT_EQ(c.kind(c.cell_at({0.09, 0.05, 0.16})), CellKind::fluid);  // above the hopper
+}
+
+// MFIX's 2-D hourglass: 2,416 of the 40 × 80 cells are fluid (counted from the three quadrics at
+// the cell centres, tests/cli/mfix_hourglass_cells.py), a 10-cell (5 cm) throat, full-width rows
+// where the circles reach the side walls, no stray fluid beyond the wall.
+TEST(CellFlags, MfixHourglassIsThreeTangentQuadrics) {
+  const Classified c(deck::load_deck(BAGNOLD_SOURCE_DIR "/cases/hourglass/mfix-hourglass.toml"));
+  EXPECT_EQ(c.grid.domain_cell_count(), 3200);
+  EXPECT_EQ(c.flags.fluid_count, 2416);
+  auto row_fluid = [&](int k) {
+    int n = 0;
+    for (int i = 0; i < 40; ++i) n += c.kind({i, 0, k}) == CellKind::fluid;
+    return n;
+  };
+  EXPECT_EQ(row_fluid(39), 10);  // z = 0.1975 m: the throat
+  EXPECT_EQ(row_fluid(40), 10);  // z = 0.2025 m
+  EXPECT_EQ(row_fluid(12), 40);  // z = 0.0625 m: the lower circle's widest
+  EXPECT_EQ(row_fluid(67), 40);  // z = 0.3375 m: the upper circle's widest
+  EXPECT_EQ(row_fluid(0), 32);   // the floor cuts the lower circle
+  EXPECT_EQ(row_fluid(79), 32);  // the top cuts the upper circle
+  EXPECT_EQ(c.kind(c.cell_at({0.10, 0.005, 0.20})), CellKind::fluid);
+  EXPECT_NE(c.kind(c.cell_at({0.02, 0.005, 0.20})), CellKind::fluid);
+  EXPECT_NE(c.kind(c.cell_at({0.0025, 0.005, 0.3975})), CellKind::fluid);  // top corner
+  EXPECT_EQ(c.kind(c.cell_at({0.0025, 0.005, 0.0625})), CellKind::fluid);
+  // Each piece blocks cells; the throat's hyperbola most of them.
+  ASSERT_EQ(c.flags.block_cells.size(), 3u);
+  for (const auto n : c.flags.block_cells) EXPECT_GT(n, 0);
+  // Symmetric about x = 0.10 m.
+  for (int k = 0; k < 80; ++k)
+    for (int i = 0; i < 20; ++i)
+      EXPECT_EQ(c.kind({i, 0, k}) == CellKind::fluid, c.kind({39 - i, 0, k}) == CellKind::fluid);
 }
 
 }  // namespace

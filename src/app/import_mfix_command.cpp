@@ -8,6 +8,7 @@
 
 #include <mpi.h>
 
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -29,7 +30,9 @@ int import_mfix_command(const ImportMfixArguments& args) {
     say(args.file + ":" + std::to_string(e.line()) + ": " + e.what(), true);
     return bad_input;
   }
-  const auto result = mfix::import_deck(records, {.source_name = args.file, .lenient = args.lenient});
+  // The header names the file without its directory, so a deck imported from anywhere is the same.
+  const std::string name = std::filesystem::path(args.file).filename().string();
+  const auto result = mfix::import_deck(records, {.source_name = name, .lenient = args.lenient});
   if (!result.unsupported.empty() && !args.lenient) {
     const auto n = result.unsupported.size();
     say(mfix::unsupported_report(args.file, result.unsupported) + "bagnold import-mfix: " +

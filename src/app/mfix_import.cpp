@@ -496,8 +496,10 @@ void Translator::initial_tables() {
     if (const Record* r = take("ic_p_g", {n})) {
       const auto p = as_real(*r);
       if (!p) refuse(*r, "not a number");
-      else if (!reference_pressure_ || std::abs(*p * units_.pressure() - *reference_pressure_) > 1e-9 * *reference_pressure_)
-        note(*r, "Bagnold initializes the gas pressure hydrostatically from gas.reference_pressure");
+      else if (!reference_pressure_ || std::abs(hi[1] - domain_.max[1]) > 1e-12 * (1.0 + std::abs(domain_.max[1])) ||
+               std::abs(*p * units_.pressure() - *reference_pressure_) > 1e-9 * *reference_pressure_)
+        note(*r, "MFIX starts from this pressure in the region; Bagnold from a hydrostatic "
+                 "pressure below gas.reference_pressure");
     }
     for (const char* temperature : {"ic_t_g", "ic_t_s"})
       for (const Record* r : take_all(temperature))

@@ -581,10 +581,14 @@ void Translator::boundary_tables() {
       bagnold_type = "free_slip_wall";
     } else if (type == "PO" || type == "P_OUTFLOW" || type == "PI" || type == "P_INFLOW") {
       bagnold_type = type[1] == 'O' || type == "P_OUTFLOW" ? "pressure_outflow" : "pressure_inflow";
-      if (const auto p = real("bc_p_g", {n}, units_.pressure()))
+      if (const auto p = real("bc_p_g", {n}, units_.pressure())) {
         extra += "pressure = " + real_text(*p) + "   # [Pa] MFIX bc_p_g\n";
-      else
+      } else {
         refuse(*type_record, "a pressure boundary needs bc_p_g");
+      }
+      // MFIX copies the solids pressure into a pressure outflow's cells (set_outflow.f).
+      if (bagnold_type == "pressure_outflow")
+        extra += "solids_pressure = \"zero-gradient\"   # as MFIX's outflow cells\n";
     } else if (type == "MI" || type == "MASS_INFLOW") {
       bagnold_type = "mass_inflow";
       extra += "gas_velocity = " + vector_text(velocity("bc_", n, {})) + "\n";

@@ -141,6 +141,7 @@ TEST(MfixImport, EachBoundaryType) {
   EXPECT_TRUE(contains(d, "type = \"pressure_inflow\"\nface = \"z-\""));
   EXPECT_TRUE(contains(d, "pressure = 101400.0"));
   EXPECT_TRUE(contains(d, "type = \"pressure_outflow\"\nface = \"z+\""));
+  EXPECT_TRUE(contains(d, "pressure = 101325.0   # [Pa] MFIX bc_p_g\nsolids_pressure = \"zero-gradient\""));
   EXPECT_TRUE(contains(d, "type = \"moving_wall\"\nface = \"y+\""));
   EXPECT_TRUE(contains(d, "wall_velocity = [0.3, 0.0, 0.0]"));
 }

@@ -514,7 +514,7 @@ void Translator::boundary_tables() {
   std::set<int> numbers;
   for (const auto& r : records_)
     if (r.keyword.rfind("bc_", 0) == 0 && !r.indices.empty()) numbers.insert(r.indices[0]);
-  // Ideal-gas keywords e_w and phip belong to Johnson-Jackson walls: read with them below.
+  // e_w, phip and phi_w belong to Johnson-Jackson walls: read here, used or noted below.
   const Record* e_w = take("e_w");
   const Record* phip = take("phip");
   const Record* phi_w = take("phi_w");

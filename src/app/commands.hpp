@@ -25,6 +25,14 @@ struct RheometerArguments {
   std::vector<std::string> overrides;
 };
 
+struct ImportMfixArguments {
+  std::string file;          // the MFIX deck (mfix.dat or .mfx)
+  std::string output;        // -o FILE: write the deck there (else stdout)
+  bool also_stdout = false;  // --stdout: with -o, print it too
+  bool lenient = false;      // --lenient: unsupported keywords become comments
+};
+
+int import_mfix_command(const ImportMfixArguments& args);
 int rheometer_command(const RheometerArguments& args);
 int check_command(const DeckArguments& args);
 int run_command(const DeckArguments& args);

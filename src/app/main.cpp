@@ -1,4 +1,5 @@
-// bagnold: the command-line program. Subcommands: run, check, rheometer, info, keys; and
+// bagnold: the command-line program. Subcommands: run, check, rheometer, info, keys,
+// import-mfix; and
 // `bagnold help [COMMAND]`, the same as --help.
 #include <CLI/CLI.hpp>
 
@@ -60,6 +61,14 @@ int main(int argc, char** argv) {
   rheometer->add_option("--set", rheo.overrides,
                         "Material or model key, e.g. --set solids.friction=0.5 (repeatable)")
       ->allow_extra_args(false);
+  ImportMfixArguments import_args;
+  auto* import_mfix = cli.add_subcommand(
+      "import-mfix", "Write a Bagnold deck (TOML) from an MFIX deck (mfix.dat or .mfx); docs/import-mfix.md");
+  import_mfix->add_option("file", import_args.file, "MFIX deck")->required();
+  import_mfix->add_option("-o,--output", import_args.output, "Write the deck to this file instead of stdout");
+  import_mfix->add_flag("--stdout", import_args.also_stdout, "With -o: print the deck on stdout too");
+  import_mfix->add_flag("--lenient", import_args.lenient,
+                        "Write the keywords Bagnold cannot express as comments instead of refusing");
   auto* keys = cli.add_subcommand("keys", "Print the deck key reference (Markdown, docs/deck.md)");
 
   // `bagnold help [COMMAND]` prints what --help prints.
@@ -104,5 +113,6 @@ int main(int argc, char** argv) {
   if (info->parsed()) return info_command();
   if (rheometer->parsed()) return rheometer_command(rheo);
   if (keys->parsed()) return keys_command();
+  if (import_mfix->parsed()) return import_mfix_command(import_args);
   return bad_input;
 }

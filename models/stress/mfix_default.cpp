@@ -1,4 +1,4 @@
-// MFIX's default: Lun et al. kinetic theory, Schaeffer friction, plastic pressure. See the header.
+// MFIX's default: algebraic kinetic theory, Schaeffer friction, plastic pressure. See the header.
 #include "models/stress/mfix_default.hpp"
 
 #include <cmath>
@@ -15,34 +15,70 @@ namespace bagnold::models::mfix_default {
 namespace {
 using std::numbers::pi;
 
-// Lun et al. coefficients per power of T: P = pressure·T, μ = shear·√T, λ = bulk·√T,
-// Γ = dissipation·T^{3/2}.
+// The algebraic kinetic theory's coefficients per power of T: P = pressure·T, μ = shear·√T,
+// λ = bulk·√T (the bulk viscosity: MFIX's second viscosity LAMBDA_s plus ⅔μ), and the
+// collisional dissipation Γ = dissipation·T^{3/2}. Both theories share Γ and the collisional
+// pressure; Lun et al. add the streaming pressure ρ_s φ T and their own viscosities.
 template <class Real>
-struct LunCoefficients {
+struct KineticCoefficients {
   Real pressure, shear, bulk, dissipation;
 };
 
+// Γ = 12(1 − e²) ρ_s φ² g0 T^{3/2}/(√π d): MFIX's K_4m φ² (Syamlal 1987; Lun et al. 1984).
 template <class Real>
-LunCoefficients<Real> lun_coefficients(Real phi, const Material& m) {
+Real dissipation_coefficient(Real phi, Real g0, const Material& m) {
+  return 12.0 * (1.0 - m.restitution * m.restitution) * m.density * phi * phi * g0 /
+         (std::sqrt(pi) * m.diameter);
+}
+
+// Syamlal's algebraic theory, as MFIX's GT_ALGEBRAIC (calc_mu_s.f) computes it whenever the
+// granular energy is algebraic (Syamlal 1987, "A review of granular stress constitutive
+// relations", topical report DOE/MC/21353-2372, the reference GT_ALGEBRAIC gives): with
+// K_1 = 2(1 + e) ρ_s g0,
+// K_3 = (d ρ_s/2)[√π/(3(3 − e)) (½(3e + 1) + ⅖(1 + e)(3e − 1) φ g0) + 8 φ g0 (1 + e)/(5√π)],
+// K_2 = 4 d ρ_s (1 + e) φ g0/(3√π) − ⅔ K_3:  P = K_1 φ² T, μ = K_3 φ √T, MFIX's second viscosity
+// K_2 φ √T, so the bulk viscosity is (K_2 + ⅔ K_3) φ √T. No streaming pressure.
+template <class Real>
+KineticCoefficients<Real> syamlal_coefficients(Real phi, const Material& m) {
+  const double e = m.restitution;
+  const Real g0 = rdf::carnahan_starling(phi);
+  const double sqrt_pi = std::sqrt(pi);
+  KineticCoefficients<Real> c;
+  c.pressure = 2.0 * (1.0 + e) * m.density * g0 * phi * phi;
+  const Real k3 = 0.5 * m.diameter * m.density *
+                  (sqrt_pi / (3.0 * (3.0 - e)) *
+                       (0.5 * (3.0 * e + 1.0) + 0.4 * (1.0 + e) * (3.0 * e - 1.0) * phi * g0) +
+                   8.0 * phi * g0 * (1.0 + e) / (5.0 * sqrt_pi));
+  c.shear = k3 * phi;
+  c.bulk = 4.0 * m.diameter * m.density * (1.0 + e) * phi * phi * g0 / (3.0 * sqrt_pi);
+  c.dissipation = dissipation_coefficient(phi, g0, m);
+  return c;
+}
+
+// Lun et al. (1984, J. Fluid Mech. 140, Eqs. for P, μ and μ_b as MFIX's GT_PDE_LUN uses them),
+// η = (1 + e)/2: P = ρ_s φ T (1 + 4ηφ g0),
+// μ = μ*/(η(2 − η) g0) (1 + (8/5)ηφ g0)(1 + (8/5)η(3η − 2)φ g0) + (3/5)η μ_b, λ = η μ_b,
+// μ* = 5ρ_s d √(πT)/96, μ_b = 256 μ* φ² g0/(5π).
+template <class Real>
+KineticCoefficients<Real> lun_coefficients(Real phi, const Material& m) {
   const double eta = 0.5 * (1.0 + m.restitution);
   const Real g0 = rdf::carnahan_starling(phi);
   const double dilute_viscosity = 5.0 * m.density * m.diameter * std::sqrt(pi) / 96.0;  // μ*/√T
   const Real bulk = 256.0 * dilute_viscosity * phi * phi * g0 / (5.0 * pi);             // μ_b/√T
-  LunCoefficients<Real> c;
+  KineticCoefficients<Real> c;
   c.pressure = m.density * phi * (1.0 + 4.0 * eta * phi * g0);
   c.shear = dilute_viscosity / (eta * (2.0 - eta) * g0) * (1.0 + 1.6 * eta * phi * g0) *
                 (1.0 + 1.6 * eta * (3.0 * eta - 2.0) * phi * g0) +
             0.6 * eta * bulk;
   c.bulk = eta * bulk;
-  c.dissipation = 12.0 * (1.0 - m.restitution * m.restitution) * m.density * phi * phi * g0 /
-                  (std::sqrt(pi) * m.diameter);
+  c.dissipation = dissipation_coefficient(phi, g0, m);
   return c;
 }
 
 // √T from dissipation·x² + pressure·tr D·x − (shear·γ̇_s² + bulk·(tr D)²) = 0, the root ≥ 0,
 // written without cancellation for tr D ≥ 0.
 template <class Real>
-Real algebraic_sqrt_temperature(const LunCoefficients<Real>& c, double shear_rate,
+Real algebraic_sqrt_temperature(const KineticCoefficients<Real>& c, double shear_rate,
                                 double divergence) {
   using std::sqrt;
   const Real production = c.shear * shear_rate * shear_rate + c.bulk * divergence * divergence;
@@ -78,7 +114,10 @@ void MfixDefault::evaluate(const Material& material, const SolidsState& in,
           m_limits.rate_independent_viscosity(p.pressure * sin_friction_angle, shear_rate);
       return p;
     }
-    const auto c = lun_coefficients(Dual::variable(phi), material);
+    const Dual fraction = Dual::variable(phi);
+    const auto c = m_constants.theory == KineticTheory::syamlal
+                       ? syamlal_coefficients(fraction, material)
+                       : lun_coefficients(fraction, material);
     const Dual sqrt_temperature = algebraic_sqrt_temperature(c, shear_rate, divergence);
     const Dual pressure = c.pressure * sqrt_temperature * sqrt_temperature;
     p.pressure = pressure.value;
@@ -97,16 +136,23 @@ double MfixDefault::packing_limit(const Material& /*material*/) const {
 namespace {
 Constants read_constants(const Coefficients& c) {
   return {.plastic = PlasticPressure::read(c),
-          .internal_friction_angle = real_coefficient(c, "internal_friction_angle")};
+          .internal_friction_angle = real_coefficient(c, "internal_friction_angle"),
+          .theory = string_coefficient(c, "kinetic_theory") == "lun" ? KineticTheory::lun
+                                                                     : KineticTheory::syamlal};
 }
 
 [[maybe_unused]] const bool registered = stress_registry().add(
     {.name = "mfix-default",
-     .summary = "MFIX default: Lun et al. kinetic theory, Schaeffer friction, plastic pressure",
+     .summary = "MFIX default: algebraic kinetic theory, Schaeffer friction, plastic pressure",
      .coefficients = concatenate(
          {PlasticPressure::specs(true),
           {real_spec("internal_friction_angle", "deg", Constants{}.internal_friction_angle, 0.0, 90.0,
-                     "φ_f [deg] (MFIX PHI): Schaeffer's frictional viscosity P* sin φ_f/γ̇_s.")},
+                     "φ_f [deg] (MFIX PHI): Schaeffer's frictional viscosity P* sin φ_f/γ̇_s."),
+           choice_spec("kinetic_theory", "syamlal", {"syamlal", "lun"},
+                       "The algebraic granular temperature's theory [-]: syamlal = MFIX's "
+                       "algebraic one (GT_ALGEBRAIC, P = 2(1 + e) ρ_s g0 φ² T, no streaming "
+                       "part); lun = Lun et al. (1984) with the streaming pressure ρ_s φ T "
+                       "(MFIX's LUN_1984 stresses, here with the algebraic balance).")},
           DiluteLimit::specs(),
           ViscosityLimits::specs(100.0)}),
      .make = [](const Coefficients& c) -> std::unique_ptr<SolidsStressModel> {

@@ -1,11 +1,10 @@
 #pragma once
 // MFIX's default dense treatment, so the report's "MFIX default" comparisons can be rerun:
-//  - viscous regime (ε_g ≥ ε_g*): Lun et al. (1984) kinetic theory, η = (1 + e)/2,
-//      P = ρ_s φ T (1 + 4ηφ g0),
-//      μ = μ*/(η(2 − η) g0) (1 + (8/5)ηφ g0)(1 + (8/5)η(3η − 2)φ g0) + (3/5)η μ_b,
-//      λ = η μ_b,  μ* = 5ρ_s d √(πT)/96,  μ_b = 256 μ* φ² g0/(5π),
-//      Γ = 12(1 − e²) ρ_s φ² g0 T^{3/2}/(√π d),  g0 Carnahan–Starling (App. B Eq. 11);
-//    T from MFIX's algebraic balance −P tr D + 2μ S:S + λ (tr D)² = Γ, a quadratic in √T;
+//  - viscous regime (ε_g ≥ ε_g*): an algebraic kinetic theory, Carnahan–Starling g0 (App. B
+//    Eq. 11), T from the local balance −P tr D + 2μ S:S + λ (tr D)² = Γ (a quadratic in √T), with
+//    Γ = 12(1 − e²) ρ_s φ² g0 T^{3/2}/(√π d). The key kinetic_theory picks the stresses:
+//      syamlal (default): MFIX's GT_ALGEBRAIC (calc_mu_s.f), P = 2(1 + e) ρ_s g0 φ² T;
+//      lun: Lun et al. (1984), P = ρ_s φ T (1 + 2(1 + e) φ g0), their μ and μ_b (the .cpp);
 //  - plastic regime (ε_g < ε_g*): the plastic pressure P* = A (ε_g* − ε_g)^n
 //    (A = 10²⁴ Pa, n = 10: MFIX's 10²⁵ dyn/cm²; plastic_pressure.hpp) with Schaeffer's (1987)
 //    frictional viscosity μ = P* sin φ_f /(2 √I₂D) = P* sin φ_f / γ̇_s, capped (MFIX: 1000 poise =
@@ -21,9 +20,12 @@
 
 namespace bagnold::models::mfix_default {
 
+enum class KineticTheory { syamlal, lun };
+
 struct Constants {
   PlasticPressure plastic;                // ε_g*, A, n
   double internal_friction_angle = 30.0;  // φ_f [deg]
+  KineticTheory theory = KineticTheory::syamlal;
 };
 
 class MfixDefault final : public SolidsStressModel {

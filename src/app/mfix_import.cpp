@@ -391,15 +391,18 @@ void Translator::solids_and_models() {
   // Closure: MFIX's algebraic kinetic theory with Schaeffer friction and the plastic pressure
   // is Bagnold's mfix-default.
   out_ << "\n[models.solids_stress]\nmodel = \"mfix-default\"        # MFIX kt_type, friction_model, rdf_type\n";
+  // MFIX's ALGEBRAIC is GT_ALGEBRAIC (Syamlal's); LUN_1984 in MFIX solves the granular energy
+  // equation, which Bagnold has not: its Lun et al. stresses with the algebraic balance instead.
+  std::string kinetic_theory = "syamlal";
   if (const Record* r = take("kt_type")) {
     const std::string kt = as_upper(*r);
-    if (kt == "ALGEBRAIC")
-      out_ << "# MFIX kt_type = 'ALGEBRAIC' (Syamlal's algebraic granular temperature) maps to mfix-default,\n"
-             "# whose algebraic temperature is today Lun et al. (1984)'s (docs/import-mfix.md)\n";
-    else if (kt == "LUN_1984")
-      out_ << "# MFIX kt_type = 'LUN_1984': mfix-default's Lun et al. (1984) kinetic theory\n";
-    else
+    if (kt == "LUN_1984") {
+      kinetic_theory = "lun";
+      out_ << "# MFIX kt_type = 'LUN_1984' solves a granular energy equation; mfix-default takes Lun et\n"
+              "# al. (1984)'s stresses with an algebraic temperature instead (docs/import-mfix.md)\n";
+    } else if (kt != "ALGEBRAIC") {
       refuse(*r, "Bagnold's mfix-default has the algebraic kinetic theory only");
+    }
   }
   if (const Record* r = take("friction_model"))
     if (as_upper(*r) != "SCHAEFFER") refuse(*r, "mfix-default has Schaeffer's friction only");
@@ -407,6 +410,7 @@ void Translator::solids_and_models() {
     if (as_upper(*r) != "CARNAHAN_STARLING" && as_upper(*r) != "CARNAHAN-STARLING")
       refuse(*r, "mfix-default has the Carnahan-Starling g0 only");
   out_ << "\n[models.solids_stress.mfix-default]\n";
+  out_ << "kinetic_theory = \"" << kinetic_theory << "\"   # MFIX kt_type ('ALGEBRAIC': Syamlal's GT_ALGEBRAIC)\n";
   if (const auto ep = real("ep_star", {}, 1.0))
     out_ << "packed_gas_fraction = " << real_text(*ep) << "   # [-] MFIX ep_star\n";
   else

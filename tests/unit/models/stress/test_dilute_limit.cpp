@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 #include <string>
 
 #include "models/stress/dilute_limit.hpp"
@@ -14,9 +15,16 @@
 
 namespace bagnold::tests {
 namespace {
+// mfix-default with Lun et al.'s stresses: its default, Syamlal's, has no falling branch (below).
 const char* const kinetic_models[] = {"skt", "mkt", "mfix-default"};
 const models::Coefficients as_printed{{"dilute_stress", std::string("kinetic")}};
 constexpr double rate = 10.0;
+
+std::unique_ptr<models::SolidsStressModel> kinetic_model(const std::string& name,
+                                                         models::Coefficients given = {}) {
+  if (name == "mfix-default") given["kinetic_theory"] = std::string("lun");
+  return make_model(name, given);
+}
 
 // φ_d of a model: where its printed P_s at fixed γ̇ is smallest.
 double pressure_minimum(const models::SolidsStressModel& printed, const Material& m) {
@@ -36,7 +44,7 @@ TEST(DiluteLimit, PrintedKineticPressureFallsAsSolidsAreAdded) {
   // The instability the treatment removes: P_s(0.01) > P_s(0.1) at the same shear rate.
   Material m;
   for (const char* name : kinetic_models) {
-    const auto printed = make_model(name, as_printed);
+    const auto printed = kinetic_model(name, as_printed);
     EXPECT_GT(probe(*printed, m, 0.01, rate).pressure, 2.0 * probe(*printed, m, 0.1, rate).pressure)
         << name;
     const double minimum = pressure_minimum(*printed, m);
@@ -45,9 +53,22 @@ TEST(DiluteLimit, PrintedKineticPressureFallsAsSolidsAreAdded) {
   }
 }
 
+TEST(DiluteLimit, SyamlalsPrintedPressureRisesFromZeroSoTheLimitNeverActs) {
+  // MFIX's algebraic theory: P_s = K_1 φ² T with T ~ 1/φ as φ → 0, so P_s ∝ φ and φ_d is the
+  // search's lower end; the ideal-gas treatment then equals the printed formulas.
+  Material m;
+  const auto printed = make_model("mfix-default", as_printed);
+  const auto limited = make_model("mfix-default");
+  EXPECT_LT(pressure_minimum(*printed, m), 1.001e-4);
+  for (const double phi : {1e-3, 0.01, 0.1, 0.3}) {
+    EXPECT_GT(probe(*printed, m, 2 * phi, rate).pressure, probe(*printed, m, phi, rate).pressure);
+    EXPECT_DOUBLE_EQ(probe(*limited, m, phi, rate).pressure, probe(*printed, m, phi, rate).pressure);
+  }
+}
+
 TEST(DiluteLimit, IdealGasPressureNeverFallsWithSolidsFraction) {
   for (const char* name : kinetic_models) {
-    const auto model = make_model(name);
+    const auto model = kinetic_model(name);
     for (const double friction : {0.0, 0.5}) {
       Material m;
       m.friction = friction;
@@ -65,8 +86,8 @@ TEST(DiluteLimit, IdealGasPressureNeverFallsWithSolidsFraction) {
 TEST(DiluteLimit, BelowTheMinimumStressesScaleWithFractionAtTheMinimumsTemperature) {
   Material m;
   for (const char* name : kinetic_models) {
-    const auto model = make_model(name);
-    const auto printed = make_model(name, as_printed);
+    const auto model = kinetic_model(name);
+    const auto printed = kinetic_model(name, as_printed);
     const double minimum = pressure_minimum(*printed, m);
     const auto at = probe(*printed, m, minimum, rate);
     for (const double phi : {1e-4, 0.01, 0.5 * minimum, 0.999 * minimum}) {

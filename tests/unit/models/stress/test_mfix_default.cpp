@@ -22,8 +22,9 @@ double lun_dissipation(const Material& m, double phi, double temperature) {
 
 TEST(MfixDefault, AlgebraicTemperatureBalancesProductionAndDissipation) {
   // 0 = −P tr D + μ γ̇_s² + λ (tr D)² − Γ (MFIX's algebraic granular energy); to rounding.
-  const auto model = make_model(
-      "mfix-default", {{"max_viscosity", 1e12}, {"dilute_stress", std::string("kinetic")}});
+  const auto model = make_model("mfix-default", {{"max_viscosity", 1e12},
+                                                 {"dilute_stress", std::string("kinetic")},
+                                                 {"kinetic_theory", std::string("lun")}});
   Material m;
   for (const double phi : {0.05, 0.3, 0.55}) {
     for (const double divergence : {0.0, 2.0, -2.0}) {
@@ -41,6 +42,52 @@ TEST(MfixDefault, AlgebraicTemperatureBalancesProductionAndDissipation) {
                   1e-12 * s.pressure);
     }
   }
+}
+
+TEST(MfixDefault, SyamlalAlgebraicTemperatureIsMfixsGtAlgebraic) {
+  // MFIX's GT_ALGEBRAIC (calc_mu_s.f) written out as MFIX does: K_1..K_4, the quadratic
+  // aq x² + bq x + cq = 0 in x = ε_s √Θ with aq = K_4 ε_s, bq = K_1 ε_s tr D,
+  // cq = −(K_2 (tr D)² + 2 K_3 D:D), x = (−bq + √(bq² − 4 aq cq))/(2 K_4); P = K_1 x²,
+  // μ = K_3 x, MFIX's second viscosity K_2 x (our bulk viscosity is K_2 x + ⅔ μ), Θ = x²/ε_s².
+  const auto model = make_model("mfix-default", {{"max_viscosity", 1e12},
+                                                 {"dilute_stress", std::string("kinetic")}});
+  Material m;
+  m.restitution = 0.8;
+  const double e = m.restitution, d = m.diameter, rho = m.density;
+  const double sqrt_pi = std::sqrt(std::numbers::pi);
+  int cases = 0;
+  for (const double phi : {0.01, 0.2, 0.45, 0.579}) {
+    for (const double divergence : {0.0, 1.5, -1.5}) {
+      for (const double strain_rate : {0.5, 20.0}) {
+        const double g0 = gd_reference::carnahan_starling(phi);
+        const double k1 = 2 * (1 + e) * rho * g0;
+        const double k3 = 0.5 * d * rho *
+                          ((sqrt_pi / (3 * (3 - e))) *
+                               (0.5 * (3 * e + 1) + 0.4 * (1 + e) * (3 * e - 1) * phi * g0) +
+                           8 * phi * g0 * (1 + e) / (5 * sqrt_pi));
+        const double k2 = 4 * d * rho * (1 + e) * phi * g0 / (3 * sqrt_pi) - 2.0 / 3.0 * k3;
+        const double k4 = 12 * (1 - e * e) * rho * g0 / (d * sqrt_pi);
+        const double d_double_dot_d = 0.5 * strain_rate * strain_rate;  // γ̇ = √(2 D:D)
+        const double aq = k4 * phi, bq = k1 * phi * divergence,
+                     cq = -(k2 * divergence * divergence + 2 * k3 * d_double_dot_d);
+        const double x = (-bq + std::sqrt(bq * bq - 4 * aq * cq)) / (2 * k4);
+        const auto s = probe(*model, m, phi, strain_rate, divergence);
+        const double tolerance = 1e-11;
+        EXPECT_NEAR(s.granular_temperature, x * x / (phi * phi),
+                    tolerance * x * x / (phi * phi)) << phi << " " << divergence;
+        EXPECT_NEAR(s.pressure, k1 * x * x, tolerance * k1 * x * x);
+        EXPECT_NEAR(s.shear_viscosity, k3 * x, tolerance * k3 * x);
+        EXPECT_NEAR(s.bulk_viscosity, k2 * x + 2.0 / 3.0 * k3 * x, tolerance * k3 * x);
+        ++cases;
+      }
+    }
+  }
+  EXPECT_EQ(cases, 24);
+  // The streaming pressure is what separates the two theories' P/Θ: ρ_s φ, at any state.
+  const auto lun = make_model("mfix-default", {{"kinetic_theory", std::string("lun")}});
+  const auto a = probe(*model, m, 0.3, 5.0), b = probe(*lun, m, 0.3, 5.0);
+  EXPECT_NEAR(b.pressure / b.granular_temperature - a.pressure / a.granular_temperature,
+              rho * 0.3, 1e-9 * rho);
 }
 
 TEST(MfixDefault, PlasticRegimeHasPlasticPressureAndSchaefferViscosity) {

@@ -2,7 +2,7 @@
 // The solids-stress interface (DESIGN.md, "Solids-stress interface"): one call evaluates a
 // closure over whole arrays of cells, never a virtual call per cell.
 //
-// Conventions (see ../shared/reference/model-notes.md):
+// Conventions (docs/models.md):
 //   strain_rate  γ̇ = sqrt(2 D:D) = 2|D|, with D the symmetric part of ∇u; in simple shear
 //                u_x = γ̇ z this returns γ̇.
 //   divergence   tr D = ∇·u [1/s].

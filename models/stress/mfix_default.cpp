@@ -4,6 +4,7 @@
 #include <cmath>
 #include <memory>
 #include <numbers>
+#include <stdexcept>
 
 #include "models/dual.hpp"
 #include "models/rdf/radial_distribution.hpp"
@@ -94,11 +95,24 @@ Real algebraic_sqrt_temperature(const KineticCoefficients<Real>& c, double shear
 
 MfixDefault::MfixDefault(const Constants& constants, const DiluteLimit& dilute,
                          const ViscosityLimits& limits)
-    : m_constants(constants), m_dilute(dilute), m_limits(limits) {}
+    : m_constants(constants), m_dilute(dilute), m_limits(limits) {
+  if (constants.transport) {
+    if (constants.theory != KineticTheory::lun)
+      throw std::invalid_argument(
+          "mfix-default: granular_energy = \"transport\" needs kinetic_theory = \"lun\" "
+          "(MFIX transports Θ with LUN_1984; Syamlal's theory is algebraic)");
+    m_transport.emplace(constants.plastic.packed_fraction());
+  }
+}
 
 void MfixDefault::evaluate(const Material& material, const SolidsState& in,
                            SolidsStress& out) const {
   require_valid_material(material, name());
+  // Without Θ (the rheometer, the deck checks' probes) the algebraic form answers.
+  if (m_transport && !in.temperature.empty()) {
+    evaluate_at_temperature(material, in, out);
+    return;
+  }
   const double packed_fraction = m_constants.plastic.packed_fraction();
   const double sin_friction_angle = std::sin(m_constants.internal_friction_angle * pi / 180.0);
   evaluate_cells_dilute_limited(m_dilute, material, in, out,
@@ -129,6 +143,43 @@ void MfixDefault::evaluate(const Material& material, const SolidsState& in,
   });
 }
 
+void MfixDefault::evaluate_at_temperature(const Material& material, const SolidsState& in,
+                                          SolidsStress& out) const {
+  const std::size_t n = in.solids_fraction.size();
+  for (const std::size_t size :
+       {in.strain_rate.size(), in.divergence.size(), in.temperature.size(), in.drag.size(),
+        out.pressure.size(), out.pressure_derivative.size(), out.shear_viscosity.size(),
+        out.bulk_viscosity.size(), out.granular_temperature.size()})
+    if (size != n)
+      throw std::invalid_argument(
+          "mfix-default: a transported Θ needs Θ and β for every cell (arrays differ in length)");
+  const double packed_fraction = m_constants.plastic.packed_fraction();
+  const double sin_friction_angle = std::sin(m_constants.internal_friction_angle * pi / 180.0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double phi = in.solids_fraction[i] > 0.0 ? in.solids_fraction[i] : 0.0;
+    const bool plastic = phi > packed_fraction;
+    // Θ is held at 0 in the plastic regime (lun1984::GranularEnergy); the kinetic stresses at
+    // the iterate's Θ elsewhere, with β for MFIX's drag-modified μ*.
+    const double theta = plastic || !(in.temperature[i] > 0.0) ? 0.0 : in.temperature[i];
+    const auto k = lun1984::point_terms(phi, theta, in.drag[i], 0.0, 0.0, material);
+    double pressure = k.pressure_per_temperature.value * theta;
+    double derivative = k.pressure_per_temperature.slope * theta;
+    double viscosity = m_limits.capped(k.shear_viscosity);
+    if (plastic) {
+      const auto star = m_constants.plastic.at(phi);
+      pressure += star.pressure;
+      derivative += star.derivative;
+      const double rate = deviatoric_shear_rate(in.strain_rate[i], in.divergence[i]);
+      viscosity += m_limits.rate_independent_viscosity(star.pressure * sin_friction_angle, rate);
+    }
+    out.pressure[i] = pressure;
+    out.pressure_derivative[i] = derivative;
+    out.shear_viscosity[i] = viscosity;
+    out.bulk_viscosity[i] = k.bulk_viscosity;
+    out.granular_temperature[i] = theta;
+  }
+}
+
 double MfixDefault::packing_limit(const Material& /*material*/) const {
   return m_constants.plastic.packed_fraction();
 }
@@ -138,7 +189,8 @@ Constants read_constants(const Coefficients& c) {
   return {.plastic = PlasticPressure::read(c),
           .internal_friction_angle = real_coefficient(c, "internal_friction_angle"),
           .theory = string_coefficient(c, "kinetic_theory") == "lun" ? KineticTheory::lun
-                                                                     : KineticTheory::syamlal};
+                                                                     : KineticTheory::syamlal,
+          .transport = string_coefficient(c, "granular_energy") == "transport"};
 }
 
 [[maybe_unused]] const bool registered = stress_registry().add(
@@ -152,7 +204,13 @@ Constants read_constants(const Coefficients& c) {
                        "The algebraic granular temperature's theory [-]: syamlal = MFIX's "
                        "algebraic one (GT_ALGEBRAIC, P = 2(1 + e) ρ_s g0 φ² T, no streaming "
                        "part); lun = Lun et al. (1984) with the streaming pressure ρ_s φ T "
-                       "(MFIX's LUN_1984 stresses, here with the algebraic balance).")},
+                       "(MFIX's LUN_1984 stresses, here with the algebraic balance)."),
+           choice_spec("granular_energy", "algebraic", {"algebraic", "transport"},
+                       "How Θ is found [-]: algebraic = the local balance production = "
+                       "dissipation (MFIX's GRANULAR_ENERGY = .FALSE.); transport = the granular "
+                       "energy equation with convection, conduction and the gas–solids exchange "
+                       "(MFIX's KT_TYPE = 'LUN_1984': needs kinetic_theory = \"lun\", and "
+                       "initial granular_temperature).")},
           DiluteLimit::specs(),
           ViscosityLimits::specs(100.0)}),
      .make = [](const Coefficients& c) -> std::unique_ptr<SolidsStressModel> {

@@ -10,10 +10,20 @@
 //    frictional viscosity μ = P* sin φ_f /(2 √I₂D) = P* sin φ_f / γ̇_s, capped (MFIX: 1000 poise =
 //    100 Pa s); the kinetic stresses and T are zero there, as in MFIX.
 // The switch at ε_g* is discontinuous in P_s, exactly as in MFIX (docs/models.md).
+// With granular_energy = "transport" (kinetic_theory "lun" only: MFIX solves its granular
+// energy equation with LUN_1984, and Syamlal's theory is algebraic) Θ is transported
+// (lun_granular_energy.hpp) and the stresses are MFIX's with GRANULAR_ENERGY = .TRUE.:
+// P_s = the kinetic pressure at Θ (+ P* in the plastic regime), μ_s = the kinetic viscosity
+// (+ Schaeffer's frictional one in the plastic regime, where Θ is held at 0 as MFIX's
+// SOLVE_GRANULAR_ENERGY does), λ_s = η μ_b; no dilute limit (the stresses at a given Θ vanish
+// as φ → 0 on their own). Called without Θ (the rheometer, the deck checks) it answers as the
+// algebraic form with the same kinetic_theory.
 
+#include <optional>
 #include <string>
 
 #include "models/stress/dilute_limit.hpp"
+#include "models/stress/lun_granular_energy.hpp"
 #include "models/stress/plastic_pressure.hpp"
 #include "models/stress/regularization.hpp"
 #include "models/stress/solids_stress.hpp"
@@ -26,6 +36,7 @@ struct Constants {
   PlasticPressure plastic;                // ε_g*, A, n
   double internal_friction_angle = 30.0;  // φ_f [deg]
   KineticTheory theory = KineticTheory::syamlal;
+  bool transport = false;  // granular_energy = "transport"
 };
 
 class MfixDefault final : public SolidsStressModel {
@@ -36,9 +47,16 @@ class MfixDefault final : public SolidsStressModel {
   bool defines_temperature() const override { return true; }
   // φ_max = 1 − ε_g*: where the plastic regime starts.
   double packing_limit(const Material& material) const override;
+  const GranularEnergyTheory* granular_energy() const override {
+    return m_transport ? &*m_transport : nullptr;
+  }
 
  private:
+  void evaluate_at_temperature(const Material& material, const SolidsState& in,
+                               SolidsStress& out) const;
+
   Constants m_constants;
+  std::optional<lun1984::GranularEnergy> m_transport;
   DiluteLimit m_dilute;
   ViscosityLimits m_limits;
 };

@@ -23,6 +23,7 @@
 
 #include "models/material.hpp"
 #include "models/registry.hpp"
+#include "models/stress/granular_energy.hpp"
 
 namespace bagnold::models {
 
@@ -36,6 +37,11 @@ struct SolidsState {
   std::span<const double> solids_fraction;  // ε_s = φ [-]
   std::span<const double> strain_rate;      // γ̇ [1/s]
   std::span<const double> divergence;       // tr D [1/s]
+  // With a transported granular temperature (granular_energy() not null): Θ [m²/s²] and the
+  // drag β [kg/(m³ s)] per cell, and granular_temperature returns Θ. Empty: the algebraic
+  // balance gives Θ.
+  std::span<const double> temperature = {};
+  std::span<const double> drag = {};
 };
 
 struct SolidsStress {
@@ -60,6 +66,10 @@ class SolidsStressModel {
   // g0 [-] the wall laws use at solids fraction φ; by default Carnahan–Starling at
   // min(max(φ, 0), max(φ_max − wall_jamming_margin, 0)).
   virtual double wall_radial_distribution(const Material& material, double solids_fraction) const;
+  // The transport coefficients of the granular energy equation (granular_energy.hpp) when the
+  // deck chose the transported Θ (the closure's key granular_energy = "transport"); null when
+  // the closure's Θ is algebraic.
+  virtual const GranularEnergyTheory* granular_energy() const { return nullptr; }
 };
 
 Registry<SolidsStressModel>& stress_registry();

@@ -7,9 +7,9 @@ namespace bagnold::solver {
 
 namespace {
 PetscLogStage stage_id(Stage stage) {
-  static const std::array<PetscLogStage, 4> ids = [] {
-    std::array<PetscLogStage, 4> registered{};
-    const char* names[4] = {"Closures", "Momentum", "Pressure", "VolumeFraction"};
+  static const std::array<PetscLogStage, 5> ids = [] {
+    std::array<PetscLogStage, 5> registered{};
+    const char* names[5] = {"Closures", "Momentum", "Pressure", "VolumeFraction", "GranularEnergy"};
     for (std::size_t i = 0; i < registered.size(); ++i) PetscLogStageRegister(names[i], &registered[i]);
     return registered;
   }();

@@ -6,7 +6,7 @@
 
 namespace bagnold::solver {
 
-enum class Stage { closures, momentum, pressure, fraction };
+enum class Stage { closures, momentum, pressure, fraction, energy };
 
 class ScopedStage {
  public:

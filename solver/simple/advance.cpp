@@ -1,5 +1,5 @@
 // One implicit-Euler time step: outer iterations (closures, momentum predictors, pressure
-// correction, solids volume fraction correction) until every normalized residual is below
+// correction, solids volume fraction correction, granular energy where Θ is transported) until every normalized residual is below
 // numerics.tolerance, or numerics.max_outer_iterations, or a linear solve fails.
 #include <algorithm>
 #include <cmath>
@@ -40,6 +40,11 @@ bool FlowSolver::iterate(run::FlowState& state, const run::FlowState& old, doubl
     if (!m_fraction->correct(old, dt, f.closures, f.response, f.carried, state, sums, m_worst, result))
       return false;
   }
+  if (m_energy) {
+    const ScopedStage stage(Stage::energy);
+    carry_all_fractions(disc, state, f.carried);
+    if (!m_energy->solve(old, dt, f.closures, f.carried, state, sums, m_worst, result)) return false;
+  }
   return true;
 }
 
@@ -76,6 +81,9 @@ StepResult FlowSolver::advance(run::FlowState& state, const run::FlowState& old,
       result.residuals.value[static_cast<std::size_t>(mixture_continuity + c)] =
           !solved || imbalance <= 1e-300 ? 0.0 : imbalance / std::max(throughput, least_throughput);
     }
+    const auto& [energy_imbalance, energy_scale] = sums.energy;
+    result.residuals.value[granular_energy] =
+        !m_energy || energy_imbalance <= 1e-300 ? 0.0 : energy_imbalance / std::max(energy_scale, 1e-300);
     for (int i = 0; i < intervention_count; ++i)
       result.interventions[static_cast<std::size_t>(i)] += sums.interventions[static_cast<std::size_t>(i)];
     const double largest = result.residuals.largest();

@@ -9,6 +9,17 @@
 
 namespace bagnold::solver {
 
+double centre_slip_speed(const parallel::Layout& layout, const run::FlowState& state, int l) {
+  double slip2 = 0.0;
+  for (int d = 0; d < 3; ++d) {
+    const auto ud = static_cast<std::size_t>(d);
+    const double relative = centre_velocity(layout, state.gas_velocity[ud], l, d) -
+                            centre_velocity(layout, state.solids_velocity[ud], l, d);
+    slip2 += relative * relative;
+  }
+  return std::sqrt(slip2);
+}
+
 Closures::Closures(const deck::Deck& deck, const Discretization& discretization)
     : m_material(deck.solids.material),
       m_drag_properties{deck.gas.density, deck.gas.viscosity, deck.solids.material.diameter,
@@ -50,8 +61,8 @@ Closures::Closures(const deck::Deck& deck, const Discretization& discretization)
   const auto local = static_cast<std::size_t>(layout.local_count());
   m_cells.reserve(local);
   for (auto* v : {&m_fraction, &m_rate, &m_pressure_rate, &m_divergence, &m_slip, &m_pressure,
-                  &m_derivative, &m_shear, &m_bulk, &m_temperature, &m_unused[0], &m_unused[1],
-                  &m_unused[2]})
+                  &m_derivative, &m_shear, &m_bulk, &m_temperature, &m_transported, &m_drag_at,
+                  &m_unused[0], &m_unused[1], &m_unused[2]})
     v->resize(local);
 }
 
@@ -68,16 +79,10 @@ void Closures::evaluate_drag(const Discretization& discretization, const run::Fl
   for (int l = 0; l < layout.local_count(); ++l) {
     fields.drag[static_cast<std::size_t>(l)] = 0.0;
     if (layout.kind(l) != grid::CellKind::fluid) continue;
-    double slip2 = 0.0;  // |u_g − u_s|² at the centre
-    for (int d = 0; d < 3; ++d) {
-      const double relative = centre_velocity(layout, state.gas_velocity[static_cast<std::size_t>(d)], l, d) -
-                              centre_velocity(layout, state.solids_velocity[static_cast<std::size_t>(d)], l, d);
-      slip2 += relative * relative;
-    }
     const std::size_t k = m_cells.size();
     m_cells.push_back(l);
     m_fraction[k] = state.gas_fraction[static_cast<std::size_t>(l)];
-    m_slip[k] = std::sqrt(slip2);
+    m_slip[k] = centre_slip_speed(layout, state, l);
   }
   const std::size_t n = m_cells.size();
   const std::span<double> beta(m_pressure.data(), n);
@@ -103,6 +108,8 @@ void Closures::evaluate_solids_stress(const Discretization& discretization, run:
     const std::size_t k = m_cells.size();
     m_cells.push_back(l);
     m_fraction[k] = std::max(state.solids_fraction[i], 0.0);  // round-off below 0 at an emptying cell
+    m_transported[k] = state.granular_temperature[i];
+    m_drag_at[k] = fields.drag[i];
     m_rate[k] = fields.strain_rate[i];
     m_divergence[k] = fields.divergence[solids][i];
     const double before = old.pressure_shear_rate[i];
@@ -115,13 +122,19 @@ void Closures::evaluate_solids_stress(const Discretization& discretization, run:
   auto input = [n](const std::vector<double>& v) { return std::span<const double>(v.data(), n); };
   models::SolidsStress out{part(m_pressure), part(m_derivative), part(m_shear), part(m_bulk),
                            part(m_temperature)};
-  m_stress->evaluate(m_material, {input(m_fraction), input(m_rate), input(m_divergence)}, out);
+  models::SolidsState in{input(m_fraction), input(m_rate), input(m_divergence)};
+  if (m_stress->granular_energy()) {
+    in.temperature = input(m_transported);
+    in.drag = input(m_drag_at);
+  }
+  m_stress->evaluate(m_material, in, out);
   if (m_relaxation_time > 0.0) {
     // P_s and dP_s/dε_s at γ̇_P; the other outputs of this call are not used.
     models::SolidsStress at_relaxed_rate{part(m_pressure), part(m_derivative), part(m_unused[0]),
                                          part(m_unused[1]), part(m_unused[2])};
-    m_stress->evaluate(m_material, {input(m_fraction), input(m_pressure_rate), input(m_divergence)},
-                       at_relaxed_rate);
+    models::SolidsState relaxed = in;
+    relaxed.strain_rate = input(m_pressure_rate);
+    m_stress->evaluate(m_material, relaxed, at_relaxed_rate);
   }
   for (std::size_t k = 0; k < n; ++k) {
     const auto i = static_cast<std::size_t>(m_cells[k]);

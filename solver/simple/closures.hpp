@@ -16,6 +16,9 @@
 // outflow cells of a pressure_outflow region with solids_pressure = "zero-gradient" take the P_s
 // of their fluid neighbour (MFIX's set_outflow), so the solids leave without a P_s drop across
 // the outlet face; with "zero" (the default) their P_s stays 0.
+// Where the closure transports Θ (models::SolidsStressModel::granular_energy()), it takes the
+// iterate's Θ (the granular energy equation's, granular_energy_equation.hpp) and β instead of
+// its algebraic balance, and hands Θ back unchanged (0 where the theory holds it there).
 
 #include <array>
 #include <memory>
@@ -31,6 +34,9 @@
 
 namespace bagnold::solver {
 
+// |u_g − u_s| at the centre of local cell l, from both phases' centre velocities.
+double centre_slip_speed(const parallel::Layout& layout, const run::FlowState& state, int l);
+
 class Closures {
  public:
   Closures(const deck::Deck& deck, const Discretization& discretization);
@@ -43,6 +49,7 @@ class Closures {
   // The solids-stress model, null unless the solids move.
   const models::SolidsStressModel* stress() const { return m_stress.get(); }
   const models::Material& material() const { return m_material; }
+  double gas_viscosity() const { return m_gas_moves ? m_gas_viscosity : 0.0; }
 
  private:
   void evaluate_drag(const Discretization& discretization, const run::FlowState& state,
@@ -65,6 +72,7 @@ class Closures {
   std::vector<int> m_cells;
   std::vector<double> m_fraction, m_rate, m_pressure_rate, m_divergence, m_slip;
   std::vector<double> m_pressure, m_derivative, m_shear, m_bulk, m_temperature;
+  std::vector<double> m_transported, m_drag_at;  // Θ and β in, where Θ is transported
   std::array<std::vector<double>, 3> m_unused;  // outputs of the second evaluation at γ̇_P
 };
 

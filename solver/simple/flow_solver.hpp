@@ -22,6 +22,8 @@
 //   3. solids volume fraction correction (volume_fraction_correction.hpp): solids continuity
 //      with the solids-pressure gradient linearized through dP_s/dε_s, limited by
 //      compression_limit.hpp; ε_g = 1 − ε_s;
+//   4. where the closure transports Θ, the granular energy equation
+//      (granular_energy_equation.hpp) on the corrected velocities and fractions;
 // the fractions each face carries (CarriedFractions) are refreshed whenever a velocity or
 // fraction changes. After convergence ε_s follows from the converged fluxes in conservative
 // form (solids_conservation.hpp: solids mass conserved to round-off). The residuals of an
@@ -34,6 +36,7 @@
 #include "solver/discretization.hpp"
 #include "solver/simple/anderson_mixing.hpp"
 #include "solver/simple/closures.hpp"
+#include "solver/simple/granular_energy_equation.hpp"
 #include "solver/simple/momentum_predictor.hpp"
 #include "solver/simple/pressure_correction.hpp"
 #include "solver/simple/solver_settings.hpp"
@@ -105,6 +108,7 @@ class FlowSolver {
   MomentumPredictor m_predictor;
   std::unique_ptr<PressureCorrection> m_pressure;        // null without moving gas
   std::unique_ptr<VolumeFractionCorrection> m_fraction;  // null unless the solids move
+  std::unique_ptr<GranularEnergyEquation> m_energy;      // null unless Θ is transported
   IterationFields m_fields;
   WorstCells m_worst;
   std::vector<double> m_stepped_solids_flux;  // set by conserve_solids

@@ -10,20 +10,23 @@ namespace bagnold::solver {
 const char* equation_name(int equation) {
   static const char* names[equation_count] = {
       "gas x momentum",    "gas y momentum",    "gas z momentum",      "solids x momentum",
-      "solids y momentum", "solids z momentum", "mixture continuity", "solids continuity"};
+      "solids y momentum", "solids z momentum", "mixture continuity", "solids continuity",
+      "granular energy"};
   return equation >= 0 && equation < equation_count ? names[equation] : "unknown equation";
 }
 
 const char* intervention_name(int intervention) {
   static const char* names[intervention_count] = {
       "limit_compression", "limit_zero_fraction", "limit_negative_stiffness",
-      "limit_velocity_scale_cap", "limit_velocity_scale_floor", "limit_anderson_clipped"};
+      "limit_velocity_scale_cap", "limit_velocity_scale_floor", "limit_anderson_clipped",
+      "limit_zero_temperature"};
   return names[intervention];
 }
 
 const char* linear_system_name(int kind) {
   static const char* names[linear_system_count] = {
-      "linear_iterations_momentum", "linear_iterations_pressure", "linear_iterations_fraction"};
+      "linear_iterations_momentum", "linear_iterations_pressure", "linear_iterations_fraction",
+      "linear_iterations_energy"};
   return names[kind];
 }
 
@@ -52,14 +55,16 @@ std::string CellLocation::text() const {
 }
 
 void IterationSums::reduce(const parallel::Communicator& comm) {
-  // One contiguous buffer, one Allreduce: 6 × 4 momentum sums, 2 × 2 continuity sums, counters.
-  constexpr std::size_t count = 6 * MomentumResidual::Sums::size + 4 + intervention_count + 1;
+  // One contiguous buffer, one Allreduce: 6 × 4 momentum sums, 2 × 2 continuity sums, 2 energy
+  // sums, counters.
+  constexpr std::size_t count = 6 * MomentumResidual::Sums::size + 4 + 2 + intervention_count + 1;
   std::array<double, count> buffer{};
   std::size_t k = 0;
   for (auto& m : momentum)
     for (double& v : m.values) buffer[k++] = v;
   for (auto& c : continuity)
     for (double& v : c) buffer[k++] = v;
+  for (double& v : energy) buffer[k++] = v;
   for (double& v : interventions) buffer[k++] = v;
   buffer[k++] = stop;
   comm.sum_in_place(buffer.data(), count);
@@ -68,6 +73,7 @@ void IterationSums::reduce(const parallel::Communicator& comm) {
     for (double& v : m.values) v = buffer[k++];
   for (auto& c : continuity)
     for (double& v : c) v = buffer[k++];
+  for (double& v : energy) v = buffer[k++];
   for (double& v : interventions) v = buffer[k++];
   stop = buffer[k++];
 }

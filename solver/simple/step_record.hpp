@@ -20,6 +20,7 @@ enum Equation : int {
   gas_momentum_x, gas_momentum_y, gas_momentum_z,
   solids_momentum_x, solids_momentum_y, solids_momentum_z,
   mixture_continuity, solids_continuity,
+  granular_energy,  // 0 unless Θ is transported
   equation_count
 };
 const char* equation_name(int equation);
@@ -40,12 +41,15 @@ enum Intervention : int {
   velocity_scale_capped,     // the residual velocity scale held at 10× the step start's (iterations)
   velocity_scale_floored,    // the residual velocity scale raised to 1e-3 of the reference speed (iterations)
   anderson_clipped,          // an Anderson mixture's ε_s clipped into the images' range (cells)
+  temperature_clamped_at_zero,  // the Θ solve left Θ < 0 (linear-solver round-off), set to 0 (cells)
   intervention_count
 };
 const char* intervention_name(int intervention);  // the monitor column
 
 // The linear systems of an outer iteration.
-enum LinearSystemKind : int { momentum_systems, pressure_system, fraction_system, linear_system_count };
+enum LinearSystemKind : int {
+  momentum_systems, pressure_system, fraction_system, energy_system, linear_system_count
+};
 const char* linear_system_name(int kind);  // the monitor column
 
 // Local partial sums of one outer iteration; reduce() adds them over the ranks at once.
@@ -53,6 +57,7 @@ struct IterationSums {
   std::array<MomentumResidual::Sums, 6> momentum{};      // per momentum Equation
   std::array<MomentumResidual, 6> normalization{};       // how each turns into a residual
   std::array<std::array<double, 2>, 2> continuity{};     // mixture, solids: {Σ|R|, Σ ½|Q|}
+  std::array<double, 2> energy{};                        // granular energy: {Σ|R|, its scale}
   std::array<double, intervention_count> interventions{};
   double stop = 0.0;  // > 0 on a rank asked to stop (a signal): every rank learns it in reduce()
   void reduce(const parallel::Communicator& comm);

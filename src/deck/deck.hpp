@@ -115,6 +115,7 @@ struct InitialRegion {
   double solids_fraction = 0.0;
   std::array<double, 3> gas_velocity{0, 0, 0};
   std::array<double, 3> solids_velocity{0, 0, 0};
+  double granular_temperature = 0.0;  // Θ [m²/s²], where the closure transports it
 };
 
 struct Numerics {

@@ -235,6 +235,12 @@ const Section<InitialRegion>& initial_section() {
           .doc("Gas velocity."),
       key(&InitialRegion::solids_velocity, "solids_velocity").unit("m/s").init()
           .doc("Solids velocity."),
+      key(&InitialRegion::granular_temperature, "granular_temperature").unit("m^2/s^2").init()
+          .within(0.0, 1e6)
+          .doc("Θ, the start of the granular energy equation where the closure transports Θ "
+               "(granular_energy = \"transport\"; MFIX's IC_THETA_M). Ignored by an algebraic "
+               "Θ. A bed with Θ = 0 and no slip stays at Θ = 0: every production term is "
+               "proportional to √Θ."),
   }};
   return s;
 }

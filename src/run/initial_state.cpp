@@ -25,6 +25,7 @@ void set_initial_state(const deck::Deck& deck, const parallel::Domain& domain, F
     for (const auto& region : deck.initial) {
       if (!initial_region_selects(region, layout.kind(l), x)) continue;
       state.solids_fraction[i] = region.solids_fraction;
+      state.granular_temperature[i] = region.granular_temperature;
       for (std::size_t d = 0; d < 3; ++d) {
         state.gas_velocity[d][i] = region.gas_velocity[d];
         state.solids_velocity[d][i] = region.solids_velocity[d];

@@ -1,5 +1,6 @@
 """Run by pvpython (paraview_client.py): opens run.xmf with the XDMF reader a user picks and
-checks what ParaView sees against the h5py reads in EXPECTED, then renders a slice to PNG.
+checks what ParaView sees against the h5py reads in EXPECTED, traces stream lines of both
+velocity vectors with Stream Tracer, then renders a slice to PNG.
 
 usage: pvpython check_in_paraview.py RUN_XMF EXPECTED_JSON PNG
 """
@@ -11,7 +12,7 @@ import sys
 from paraview import servermanager
 from paraview.simple import (ColorBy, GetActiveViewOrCreate, GetAnimationScene,
                              GetColorTransferFunction, Render, ResetCamera, SaveScreenshot, Show,
-                             Slice, Threshold, Xdmf3ReaderS)
+                             Slice, StreamTracer, Threshold, Xdmf3ReaderS)
 from vtkmodules.numpy_interface import dataset_adapter as dsa
 
 xmf, expected_path, png = sys.argv[1:4]
@@ -83,6 +84,26 @@ for name, values in expected["openings"].items():
 out = [float(v) for v in openings.CellData["solids_outflow_velocity"]]
 print(f"openings: {openings.GetNumberOfCells()} faces, solids outflow velocity "
       f"{min(out):.3g} to {max(out):.3g} m/s")
+
+# Stream lines: Stream Tracer takes each velocity vector as it is (cell data, no Calculator), on
+# the fluid cells (Threshold on cell_flags, so that no line starts in a NaN cell), seeded on a
+# line across the packed fill; each must give lines with points.
+fluid_cells = Threshold(Input=reader, Scalars=["CELLS", "cell_flags"], LowerThreshold=1,
+                        UpperThreshold=1)
+b = expected["bounds"]
+for name in expected["vectors"]:
+    tracer = StreamTracer(Input=fluid_cells, SeedType="Line")
+    tracer.Vectors = ["CELLS", name]
+    tracer.SeedType.Point1 = [b[0] + 0.15 * (b[1] - b[0]), 0.5 * (b[2] + b[3]), b[4] + 0.3 * (b[5] - b[4])]
+    tracer.SeedType.Point2 = [b[0] + 0.85 * (b[1] - b[0]), 0.5 * (b[2] + b[3]), b[4] + 0.3 * (b[5] - b[4])]
+    tracer.SeedType.Resolution = 10
+    tracer.MaximumStreamlineLength = b[5] - b[4]
+    tracer.UpdatePipeline(last)
+    info = tracer.GetDataInformation()
+    points, lines = info.GetNumberOfPoints(), info.GetNumberOfCells()
+    print(f"stream tracer on {name}: {lines} lines, {points} points")
+    if points == 0 or lines == 0:
+        fail(f"Stream Tracer on {name} gave no lines ({points} points)")
 
 # A slice of the fluid cells (Threshold on cell_flags) through y, coloured by the solids fraction.
 view = GetActiveViewOrCreate("RenderView")

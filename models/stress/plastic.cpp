@@ -28,7 +28,7 @@ double Plastic::packing_limit(const Material& /*material*/) const {
 namespace {
 [[maybe_unused]] const bool registered = stress_registry().add(
     {.name = "plastic",
-     .summary = "minimal closure: MFIX's plastic pressure and a constant viscosity (issue 4)",
+     .summary = "minimal closure: MFIX's plastic pressure and a constant viscosity",
      .coefficients = concatenate(
          {PlasticPressure::specs(),
           {real_spec("viscosity", "Pa s", Constants{}.viscosity, 0.0, 1e5,

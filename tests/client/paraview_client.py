@@ -6,8 +6,9 @@ usage: paraview_client.py BAGNOLD DECK RUN_DIR
 Runs DECK for a few steps into RUN_DIR, reads what its snapshots hold with h5py, then opens
 RUN_DIR/run.xmf in pvpython (under xvfb-run -a) with check_in_paraview.py, which checks the
 bounds, the time steps, the fields, the cell-centred velocity vectors (components and
-magnitudes against the h5py reads) and the openings' face velocities, and renders a slice to
-PNG (the packed fill must show in it). Exits 77 (CTest's SKIP_RETURN_CODE) with a message when pvpython or xvfb-run is missing.
+magnitudes against the h5py reads) and the openings' face velocities, renders a slice to
+PNG (the packed fill must show in it) and traces stream lines of both vectors (Stream Tracer
+must return lines with points). Exits 77 (CTest's SKIP_RETURN_CODE) with a message when pvpython or xvfb-run is missing.
 """
 import glob
 import json

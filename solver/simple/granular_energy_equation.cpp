@@ -11,9 +11,21 @@ GranularEnergyEquation::GranularEnergyEquation(const Discretization& discretizat
                                                const Closures& closures, double solids_density)
     : m_discretization(discretization),
       m_theory(*closures.stress()->granular_energy()),
+      m_closure(*closures.stress()),
       m_material(closures.material()),
       m_density(solids_density),
       m_gas_viscosity(closures.gas_viscosity()) {
+  const auto& regions = discretization.domain().regions;
+  for (std::size_t r = 0; r < regions.regions.size(); ++r) {
+    const auto& region = regions.regions[r];
+    const bool wall = regions.types[r] == grid::BoundaryType::no_slip_wall ||
+                      regions.types[r] == grid::BoundaryType::moving_wall;
+    if (wall && region.solids_wall == "johnson-jackson")
+      m_walls.emplace_back(models::wall::JohnsonJacksonWall{
+          region.specularity, region.wall_restitution, m_closure.packing_limit(m_material)});
+    else
+      m_walls.emplace_back();
+  }
   const auto& numbering = discretization.cell_numbering();
   KrylovSettings energy;  // convection makes it non-symmetric
   energy.ksp_type = "bcgs";
@@ -49,6 +61,27 @@ void GranularEnergyEquation::evaluate_terms(const run::FlowState& state,
   m_theory.evaluate(m_material, in, out);
 }
 
+std::array<double, 2> GranularEnergyEquation::wall_flux_coefficients(const run::FlowState& state,
+                                                                   int l, int face, int r) const {
+  const auto& wall = *m_walls[static_cast<std::size_t>(r)];
+  const auto& layout = m_discretization.layout();
+  const auto& region = m_discretization.domain().regions.regions[static_cast<std::size_t>(r)];
+  const int normal = parallel::face_direction(face);
+  double slip2 = 0.0;  // tangential slip at the cell centre
+  for (int a = 0; a < 3; ++a) {
+    if (a == normal) continue;
+    const double slip = centre_velocity(layout, state.solids_velocity[static_cast<std::size_t>(a)], l, a) -
+                        region.wall_velocity[static_cast<std::size_t>(a)];
+    slip2 += slip * slip;
+  }
+  const double phi = m_fraction[static_cast<std::size_t>(l)];
+  const double g0 = m_closure.wall_radial_distribution(m_material, phi);
+  // q_w scales as √Θ (generation) and Θ^{3/2} (loss): both from the flux at Θ = 1.
+  const double loss = -models::wall::johnson_jackson_energy_flux(wall, m_material, phi, g0, 1.0, 0.0);
+  const double gain = models::wall::johnson_jackson_energy_flux(wall, m_material, phi, g0, 1.0, std::sqrt(slip2)) + loss;
+  return {gain, loss};
+}
+
 bool GranularEnergyEquation::solve(const run::FlowState& old, double dt,
                                    const ClosureFields& closures, const CarriedFractions& carried,
                                    run::FlowState& state, IterationSums& sums, WorstCells& worst,
@@ -74,7 +107,17 @@ bool GranularEnergyEquation::solve(const run::FlowState& old, double dt,
     std::int64_t columns[7];
     double values[7];
     int count = 0;
+    const double t_star = m_temperature[i];
+    const double sqrt_t = std::sqrt(t_star);
     for_each_cell_face(disc, l, [&](const CellFace& f) {
+      if (f.neighbour >= 0 && layout.kind(f.neighbour) == grid::CellKind::boundary) {
+        const int r = layout.region(f.neighbour);
+        if (r >= 0 && m_walls[static_cast<std::size_t>(r)]) {
+          const auto [gain, loss] = wall_flux_coefficients(state, l, f.face, r);
+          b += f.area * (gain * sqrt_t + 0.5 * loss * t_star * sqrt_t);
+          a_p += f.area * 1.5 * loss * sqrt_t;
+        }
+      }
       if (f.of(kind) != FaceClass::unknown) return;
       const double mass_out = m_density * f.area * f.of(carried.value[solids]) * f.sign * f.of(u);
       const double inflow = 1.5 * std::max(-mass_out, 0.0);
@@ -94,8 +137,6 @@ bool GranularEnergyEquation::solve(const run::FlowState& old, double dt,
     });
     const double divergence = closures.divergence[solids][i];
     const double rate2 = closures.strain_rate[i] * closures.strain_rate[i];
-    const double t_star = m_temperature[i];
-    const double sqrt_t = std::sqrt(t_star);
     const double c = m_dissipation[i];
     a_p += accumulation +
            volume * (m_pressure_per_temperature[i] * std::max(divergence, 0.0) + 1.5 * c * sqrt_t + 3.0 * m_drag[i]);

@@ -13,15 +13,22 @@
 // subtracted, as MFIX's; the dissipation c Θ^{3/2} linearized by Newton about Θ*). Every a_nb
 // ≥ 0, a_P ≥ Σ a_nb and b ≥ 0: an M-matrix with a non-negative right-hand side, so Θ ≥ 0 comes
 // from the discretization; the linear solver's round-off below 0 is set to 0 and counted
-// (temperature_clamped_at_zero). Walls, openings and blocked cells conduct no energy
-// (adiabatic); solids entering through an inflow bring Θ = 0. Cells where the theory holds Θ
+// (temperature_clamped_at_zero). A wall whose solids_wall is johnson-jackson exchanges
+// Johnson & Jackson's (1987) energy flux q_w = A √Θ − B Θ^{3/2} through each wall face
+// (models/wall/johnson_jackson.hpp, at the cell's φ, the closure's wall g0 and φ_max and the
+// centre's tangential slip): A √Θ* into b, B Θ^{3/2} linearized by Newton as the dissipation.
+// Every other wall, opening and blocked cell conducts no energy (adiabatic); solids entering
+// through an inflow bring Θ = 0. Cells where the theory holds Θ
 // (mfix-default's plastic regime) or that hold no solids (ε_s ≤ vacant_fraction) get Θ = 0.
 // Its residual is Σ|R_P| / Σ max(|a_P Θ*_P|, |b_P|) at the iterate, before the solve.
 
 #include <memory>
 #include <vector>
 
+#include <optional>
+
 #include "models/stress/solids_stress.hpp"
+#include "models/wall/johnson_jackson.hpp"
 #include "solver/discretization.hpp"
 #include "solver/petsc/linear_system.hpp"
 #include "solver/simple/closures.hpp"
@@ -50,9 +57,15 @@ class GranularEnergyEquation {
 
  private:
   void evaluate_terms(const run::FlowState& state, const ClosureFields& closures);
+  // Johnson–Jackson's q_w = A √Θ − B Θ^{3/2} [W/m²] on the wall face of cell l towards `face`
+  // (region r): {A, B}.
+  std::array<double, 2> wall_flux_coefficients(const run::FlowState& state, int l, int face, int r) const;
 
   const Discretization& m_discretization;
   const models::GranularEnergyTheory& m_theory;
+  const models::SolidsStressModel& m_closure;
+  // Per boundary region: its Johnson–Jackson wall, or none (adiabatic).
+  std::vector<std::optional<models::wall::JohnsonJacksonWall>> m_walls;
   models::Material m_material;
   double m_density;        // ρ_s
   double m_gas_viscosity;  // μ_g, 0 without moving gas

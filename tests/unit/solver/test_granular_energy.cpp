@@ -4,13 +4,16 @@
 //    t₀ = 3 ρ_s φ/(c √Θ₀) from (3/2) ρ_s φ dΘ/dt = −c Θ^{3/2}; implicit Euler's error falls as dt;
 //  - simple shear at steady state: production μ_s γ̇² = dissipation c Θ^{3/2} (no gas: μ_s ∝ √Θ)
 //    gives Θ = (μ_s/√Θ) γ̇²/c, recovered to round-off at every φ below packing;
-//  - Θ ≥ 0 without a clamp under a compressing, shearing random flow.
+//  - Θ ≥ 0 without a clamp under a compressing, shearing random flow;
+//  - Johnson–Jackson walls: a plug sliding between two of them settles where the walls'
+//    generation A√Θ − loss BΘ^{3/2} on both faces balances the bulk dissipation c Θ^{3/2} V.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
 
 #include "models/stress/lun_granular_energy.hpp"
+#include "models/wall/johnson_jackson.hpp"
 #include "solver/simple/face_fractions.hpp"
 #include "solver/simple/flow_solver.hpp"
 #include "solver/simple/granular_energy_equation.hpp"
@@ -124,6 +127,49 @@ TEST(GranularEnergy, StaysNonNegativeUnderACompressingShearingFlow) {
   EXPECT_LE(c.max(-lowest), 0.0);  // the lowest Θ on any rank is ≥ 0
   EXPECT_GT(c.max(highest), 1e-4);  // the shear heated it
   EXPECT_EQ(c.sum(sums.interventions[solver::temperature_clamped_at_zero]), 0.0);
+}
+
+TEST(GranularEnergy, JohnsonJacksonWallsHeatASlidingPlug) {
+  // Two cells, periodic in x and y, Johnson–Jackson walls at z = 0 and z = 2 cm; the solids
+  // slide along x at 0.2 m/s with no shear inside. By symmetry nothing is conducted between
+  // the two: in each, V c Θ^{3/2} = A (gain √Θ − loss Θ^{3/2}).
+  const std::string walls =
+      "[[boundary]]\nname = \"floor\"\ntype = \"no_slip_wall\"\nface = \"z-\"\n"
+      "solids_wall = \"johnson-jackson\"\nspecularity = 0.5\nwall_restitution = 0.9\n"
+      "[[boundary]]\nname = \"roof\"\ntype = \"no_slip_wall\"\nface = \"z+\"\n"
+      "solids_wall = \"johnson-jackson\"\nspecularity = 0.5\nwall_restitution = 0.9\n";
+  const double phi = 0.3, speed = 0.2;
+  Case c(unit_deck(1, 1, 2, "\"x\", \"y\"", 0.0,
+                   walls + two_fluid("mfix-default", false) +
+                       "[models.solids_stress.mfix-default]\npacked_gas_fraction = 0.42\n"
+                       "kinetic_theory = \"lun\"\ngranular_energy = \"transport\"\n" +
+                       tight_linear_solves + "[[initial]]\nsolids_fraction = 0.3\n"
+                       "granular_temperature = 1e-4\nsolids_velocity = [0.2, 0.0, 0.0]\n"));
+  run::set_initial_state(c.deck, c.domain, c.state);
+  solver::Closures closures(c.deck, c.disc);
+  solver::GranularEnergyEquation equation(c.disc, closures, c.deck.solids.material.density);
+  solver::ClosureFields fields(static_cast<std::size_t>(c.local_count()));  // no shear
+  solver::CarriedFractions carried(static_cast<std::size_t>(c.local_count()));
+  for (int k = 0; k < 100; ++k) {
+    c.old = c.state;
+    solver::IterationSums sums;
+    solver::WorstCells worst;
+    solver::StepResult record;
+    ASSERT_TRUE(equation.solve(c.old, 1.0, fields, carried, c.state, sums, worst, record)) << record.failure;
+  }
+  const auto& m = c.deck.solids.material;
+  const auto* closure = closures.stress();
+  const models::wall::JohnsonJacksonWall wall{0.5, 0.9, closure->packing_limit(m)};
+  const double g0 = closure->wall_radial_distribution(m, phi);
+  const double loss = -models::wall::johnson_jackson_energy_flux(wall, m, phi, g0, 1.0, 0.0);
+  const double gain = models::wall::johnson_jackson_energy_flux(wall, m, phi, g0, 1.0, speed) + loss;
+  const double dissipation = models::lun1984::point_terms(phi, 1.0, 0.0, 0.0, 0.0, m).dissipation_coefficient;
+  const double area = 1e-4, volume = 1e-6;  // the 1 cm cell
+  // Divided by √Θ:
+  const double expected = area * gain / (volume * dissipation + area * loss);
+  ASSERT_GT(gain, 0.0);
+  for (int l = 0; l < c.owned_fluid(); ++l)
+    EXPECT_NEAR(c.state.granular_temperature[static_cast<std::size_t>(l)], expected, 1e-12 * expected);
 }
 
 }  // namespace

@@ -41,12 +41,25 @@ Real bulk_factor(Real phi, Real g0, double restitution) {
   return (4.0 / (3.0 * std::sqrt(pi))) * (1.0 + restitution) * phi * phi * g0;
 }
 
+template <class Real>
+Real conductivity_factor(Real phi, Real g0, double restitution) {
+  const double e = restitution;
+  const Real cooling = (5.0 / 12.0) * g0 * (1.0 - e * e);                               // ζ0*
+  const Real collision_frequency = (g0 / 3.0) * (1.0 + e) * (1.0 + (33.0 / 16.0) * (1.0 - e));  // ν_κ*
+  const Real kinetic = (2.0 / 3.0) * (1.0 + 0.6 * phi * g0 * (1.0 + e) * (1.0 + e) * (2.0 * e - 1.0)) /
+                       (collision_frequency - 2.0 * cooling);                          // κ_k*
+  const Real scaled = kinetic * (1.0 + 1.2 * phi * g0 * (1.0 + e)) +
+                      (256.0 / 25.0) * (phi * phi / pi) * g0 * (1.0 + e);              // κ*
+  return (15.0 / 4.0) * (5.0 * std::sqrt(pi) / 96.0) * scaled;
+}
+
 #define BAGNOLD_INSTANTIATE(Real)                       \
   template Real pressure_factor(Real, Real, double);    \
   template Real scaled_viscosity(Real, Real, double);   \
   template Real shear_factor(Real, Real, double);       \
   template Real dissipation_factor(Real, Real, double); \
-  template Real bulk_factor(Real, Real, double);
+  template Real bulk_factor(Real, Real, double);        \
+  template Real conductivity_factor(Real, Real, double);
 BAGNOLD_INSTANTIATE(double)
 BAGNOLD_INSTANTIATE(Dual)
 #undef BAGNOLD_INSTANTIATE

@@ -31,4 +31,14 @@ Real dissipation_factor(Real phi, Real g0, double restitution);
 template <class Real>
 Real bulk_factor(Real phi, Real g0, double restitution);
 
+// Conductivity κ = ρ_s d J_κ √T of the granular energy flux q = −κ ∇T. Garzó & Dufty (1999,
+// Phys. Rev. E 59, 5895, Eqs. for κ*, as MFIX's GT_PDE_GD writes them) with c* = 0 as
+// everywhere here: with ζ0* = (5/12) g0 (1 − e²), ν_κ* = (g0/3)(1 + e)(1 + (33/16)(1 − e)),
+//   κ_k* = (2/3)(1 + (3/5) φ g0 (1 + e)² (2e − 1)) / (ν_κ* − 2 ζ0*),
+//   κ*   = κ_k* (1 + (6/5) φ g0 (1 + e)) + (256/25)(φ²/π) g0 (1 + e),
+// and the dilute κ0 = (15/4) η0 = (15/4)(5√π/96) ρ_s d √T: J_κ = (15/4)(5√π/96) κ*. The report
+// leaves the conductivity open (App. B Sec. V: δ_λ = 1, Jenkins & Berzi's choice, is GD's).
+template <class Real>
+Real conductivity_factor(Real phi, Real g0, double restitution);
+
 }  // namespace bagnold::models::garzo_dufty

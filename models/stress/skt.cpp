@@ -1,7 +1,9 @@
 // Standard kinetic theory (Garzó–Dufty), report App. B Eqs. 1–18. See skt.hpp.
 #include "models/stress/skt.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <memory>
 #include <string>
 
@@ -33,15 +35,49 @@ template KineticState<Dual> kinetic_state(Dual, const Material&, double,
                                           const rdf::RadialDistribution&, const DenseLimit&);
 
 Skt::Skt(const rdf::RadialDistribution& radial, bool frictional_yield, const DenseLimit& dense,
-         const DiluteLimit& dilute, const ViscosityLimits& limits)
+         const DiluteLimit& dilute, const ViscosityLimits& limits, bool transport)
     : m_radial(&radial),
       m_frictional_yield(frictional_yield),
       m_dense(dense),
       m_dilute(dilute),
-      m_limits(limits) {}
+      m_limits(limits) {
+  if (transport) m_transport.emplace(radial, dense);
+}
+
+void Skt::evaluate_at_temperature(const Material& material, const SolidsState& in,
+                                  SolidsStress& out) const {
+  const std::size_t n = in.solids_fraction.size();
+  for (const std::size_t size :
+       {in.strain_rate.size(), in.divergence.size(), in.temperature.size(), out.pressure.size(),
+        out.pressure_derivative.size(), out.shear_viscosity.size(), out.bulk_viscosity.size(),
+        out.granular_temperature.size()})
+    if (size != n) throw std::invalid_argument("skt: a transported Θ needs Θ for every cell (arrays differ in length)");
+  const double critical = chialvo2012::critical_fraction(material.friction);
+  const double yield_ratio = m_frictional_yield ? chialvo2012::yield_stress_ratio(material.friction) : 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double phi = in.solids_fraction[i] > 0.0 ? in.solids_fraction[i] : 0.0;
+    const double theta = in.temperature[i] > 0.0 ? in.temperature[i] : 0.0;
+    const double root = std::sqrt(theta);
+    const auto f = transport_factors(phi, material, *m_radial, m_dense);
+    const Dual quasi_static = phi > 0.0 ? m_dense.quasi_static_pressure(Dual::variable(phi), critical,
+                                                                       material.stiffness / material.diameter,
+                                                                       material.friction)
+                                        : Dual(0.0);
+    const double rate = deviatoric_shear_rate(in.strain_rate[i], in.divergence[i]);
+    out.pressure[i] = f.pressure.value * theta + quasi_static.value;
+    out.pressure_derivative[i] = f.pressure.slope * theta + quasi_static.slope;
+    out.shear_viscosity[i] = m_limits.with_yield_stress(f.shear * root, yield_ratio * quasi_static.value, rate);
+    out.bulk_viscosity[i] = f.bulk * root;
+    out.granular_temperature[i] = theta;
+  }
+}
 
 void Skt::evaluate(const Material& material, const SolidsState& in, SolidsStress& out) const {
   require_valid_material(material, name());
+  if (m_transport && !in.temperature.empty()) {  // without Θ the algebraic form answers
+    evaluate_at_temperature(material, in, out);
+    return;
+  }
   const double rho = material.density;
   const double d = material.diameter;
   const double critical = chialvo2012::critical_fraction(material.friction);
@@ -90,7 +126,12 @@ std::string radial_distribution_doc() {
            choice_spec("frictional_yield", "off", {"off", "on"},
                        "Quasi-static yield stress η_s(μ) P_qs [-] (App. A Table II) added to the "
                        "kinetic shear stress: off = the report's SKT, frictionless in shear; on "
-                       "= Mohr-Coulomb friction in the packed bed (slows the bin ~2.6x at 10 mm).")},
+                       "= Mohr-Coulomb friction in the packed bed (slows the bin ~2.6x at 10 mm)."),
+           choice_spec("granular_energy", "algebraic", {"algebraic", "transport"},
+                       "How T is found [-]: algebraic = the steady-shear balance (Eq. 15, the "
+                       "report's SKT); transport = the granular energy equation with Garzó–Dufty's "
+                       "conductivity (c* = 0), convection and the gas–solids exchange; needs "
+                       "initial granular_temperature.")},
           DenseLimit::specs(),
           DiluteLimit::specs(),
           ViscosityLimits::specs()}),
@@ -98,7 +139,8 @@ std::string radial_distribution_doc() {
        return std::make_unique<Skt>(
            rdf::radial_distribution(string_coefficient(c, "radial_distribution")),
            string_coefficient(c, "frictional_yield") == "on", DenseLimit::read(c),
-           DiluteLimit::read(c), ViscosityLimits::read(c));
+           DiluteLimit::read(c), ViscosityLimits::read(c),
+           string_coefficient(c, "granular_energy") == "transport");
      }});
 }  // namespace
 

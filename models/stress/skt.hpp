@@ -8,6 +8,7 @@
 // Outside: at and above φ_c(μ) − δ the dense limit of dense_limit.hpp applies; below the dilute
 // cutoff the stresses are zero.
 
+#include <optional>
 #include <string>
 
 #include "models/dual.hpp"
@@ -15,6 +16,7 @@
 #include "models/stress/dense_limit.hpp"
 #include "models/stress/dilute_limit.hpp"
 #include "models/stress/regularization.hpp"
+#include "models/stress/skt_granular_energy.hpp"
 #include "models/stress/solids_stress.hpp"
 
 namespace bagnold::models::skt {
@@ -39,20 +41,28 @@ class Skt final : public SolidsStressModel {
  public:
   // frictional_yield: add the quasi-static yield stress η_s(μ) P_qs of the dense limit (off in
   // the report's SKT, which "does not consider ... the role of frictional contact").
+  // transport: Θ from the granular energy equation (skt_granular_energy.hpp) instead of the
+  // algebraic balance; evaluate() then takes Θ (and answers algebraically without it).
   Skt(const rdf::RadialDistribution& radial, bool frictional_yield, const DenseLimit& dense,
-      const DiluteLimit& dilute, const ViscosityLimits& limits);
+      const DiluteLimit& dilute, const ViscosityLimits& limits, bool transport = false);
   std::string name() const override { return "skt"; }
   void evaluate(const Material& material, const SolidsState& in, SolidsStress& out) const override;
   bool defines_temperature() const override { return true; }
   // φ_max = φ_c(μ) of App. A Table I, where g0 is capped (dense_limit.hpp).
   double packing_limit(const Material& material) const override;
+  const GranularEnergyTheory* granular_energy() const override {
+    return m_transport ? &*m_transport : nullptr;
+  }
 
  private:
+  void evaluate_at_temperature(const Material& material, const SolidsState& in, SolidsStress& out) const;
+
   const rdf::RadialDistribution* m_radial;  // an entry of rdf::radial_distributions()
   bool m_frictional_yield;
   DenseLimit m_dense;
   DiluteLimit m_dilute;
   ViscosityLimits m_limits;
+  std::optional<GranularEnergy> m_transport;
 };
 
 }  // namespace bagnold::models::skt

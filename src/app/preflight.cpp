@@ -5,6 +5,7 @@
 #include "src/parallel/domain_summary.hpp"
 #include "src/run/flow_state.hpp"
 #include "src/run/memory_estimate.hpp"
+#include "src/run/pressure_probe.hpp"
 #include "src/run/region_census.hpp"
 #include "src/run/region_report.hpp"
 
@@ -50,6 +51,8 @@ Preflight preflight(const deck::Deck& deck, const parallel::Communicator& comm) 
   auto regions = run::report_regions(deck, *p.domain, run::take_region_census(deck, *p.domain));
   p.text += regions.text;
   p.errors = std::move(regions.errors);
+  for (const auto& problem : run::pressure_probe_problems(deck, *p.domain))
+    p.errors.error(deck.origin_of(problem.key), problem.key, problem.message);
   return p;
 }
 

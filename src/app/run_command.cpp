@@ -132,7 +132,7 @@ int run_command(const DeckArguments& args) {
       }
     }
     record_run(deck, provenance, comm);
-    io::Monitor monitor(output.directory() + "/monitor.csv", monitor_columns(domain),
+    io::Monitor monitor(output.directory() + "/monitor.csv", monitor_columns(deck, domain),
                         comm.is_root(), start.snapshot.empty() ? nullptr : &start.time);
     solver::PetscSession petsc(nullptr, nullptr);
     solver::PetscSession::add_options(args.petsc_options);

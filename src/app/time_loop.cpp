@@ -8,12 +8,13 @@
 #include "src/app/time_step_controller.hpp"
 #include "src/run/agree.hpp"
 #include "src/run/monitor_columns.hpp"
+#include "src/run/pressure_probe.hpp"
 #include "src/run/stop_request.hpp"
 
 namespace bagnold::app {
 
-std::vector<std::string> monitor_columns(const parallel::Domain& domain) {
-  auto columns = run::monitor_columns(domain.regions);
+std::vector<std::string> monitor_columns(const deck::Deck& deck, const parallel::Domain& domain) {
+  auto columns = run::monitor_columns(domain.regions, deck.pressure_probes);
   for (int i = 0; i < solver::intervention_count; ++i) columns.push_back(solver::intervention_name(i));
   for (int k = 0; k < solver::linear_system_count; ++k) columns.push_back(solver::linear_system_name(k));
   columns.push_back("courant");
@@ -32,6 +33,8 @@ std::vector<double> monitor_row(const TimeLoopContext& context, const FlowSolver
     row.push_back(gas_flux[r]);
     row.push_back(solids_flux[r]);
   }
+  const auto drops = run::pressure_drops(context.deck, context.domain, state);  // collective
+  row.insert(row.end(), drops.begin(), drops.end());
   row.insert(row.end(), step.interventions.begin(), step.interventions.end());
   row.insert(row.end(), step.linear_iterations.begin(), step.linear_iterations.end());
   row.push_back(courant);

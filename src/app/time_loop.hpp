@@ -56,7 +56,7 @@ RunSummary run_time_loop(const TimeLoopContext& context, FlowSolver& flow, run::
 // The monitor's columns: run::monitor_columns, then a count per numerical limiter and the linear
 // iterations per kind of system, each summed over the step's outer iterations, then the step's
 // Courant number.
-std::vector<std::string> monitor_columns(const parallel::Domain& domain);
+std::vector<std::string> monitor_columns(const deck::Deck& deck, const parallel::Domain& domain);
 // The monitor row after a step.
 std::vector<double> monitor_row(const TimeLoopContext& context, const FlowSolver& flow,
                                 const run::FlowState& state, double dt, const StepResult& step,

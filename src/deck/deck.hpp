@@ -25,6 +25,8 @@ struct RunControl {
 
 struct Physics {
   std::array<double, 3> gravity{0.0, 0.0, -9.81};  // [m/s²]
+  // The axis gravity acts along, or -1 when it has more than one non-zero component (or none).
+  int gravity_axis() const;
 };
 
 struct Axis {
@@ -92,6 +94,9 @@ struct Gas {
   double density = 1.2;        // ρ_g [kg/m³]
   double viscosity = 1.8e-5;   // μ_g [Pa s]
   double reference_pressure = 101325.0;  // [Pa]
+  // The initial gas pressure below the top: gas-weight (ρ_g g h) or bed-weight (the weight of
+  // gas and solids above, per area of each layer: MFIX's set_fluidbed_p).
+  std::string initial_pressure = "gas-weight";
 };
 
 struct Solids {
@@ -116,6 +121,15 @@ struct InitialRegion {
   std::array<double, 3> gas_velocity{0, 0, 0};
   std::array<double, 3> solids_velocity{0, 0, 0};
   double granular_temperature = 0.0;  // Θ [m²/s²], where the closure transports it
+};
+
+// A pressure probe: the monitor column dp_<name> = p_g(lower) − p_g(upper) [Pa], each end the
+// gas pressure of the fluid cell containing the point (average = cell) or the area-weighted mean
+// over the fluid cells of the layer across gravity that contains it (average = layer).
+struct PressureProbe {
+  std::string name;
+  std::array<double, 3> lower{0, 0, 0}, upper{0, 0, 0};  // [m]
+  std::string average = "layer";  // layer | cell
 };
 
 struct Numerics {
@@ -168,6 +182,7 @@ struct Deck {
   Solids solids;
   Models models;
   std::vector<InitialRegion> initial;
+  std::vector<PressureProbe> pressure_probes;  // [[pressure_probe]]
   Numerics numerics;
   Output output;
   // Every table, array element and key of the deck by its dotted path as messages name it

@@ -20,7 +20,7 @@ namespace {
 
 const std::vector<std::string> top_level_sections = {
     "extends", "run", "physics", "grid", "geometry", "boundary", "gas", "solids", "models", "initial",
-    "numerics", "output"};
+    "pressure_probe", "numerics", "output"};
 
 toml::source_region no_source(const std::string& file) {
   toml::source_region r{};  // value-initialized: line 0 means "no position"
@@ -459,6 +459,45 @@ void check_initial_packing(const toml::table& root, const Deck& deck, Diagnostic
   }
 }
 
+// Options that work layer by layer across gravity (gas.initial_pressure = bed-weight, a probe's
+// average = layer) need gravity along one axis that is not periodic.
+void check_layered(const toml::node* node, const std::string& path, const std::string& what,
+                   const Deck& deck, Diagnostics& diag) {
+  const int axis = deck.physics.gravity_axis();
+  if (axis < 0)
+    diag.error(node->source(), path,
+               what + " needs gravity along one axis (physics.gravity has " +
+                   to_toml_text(deck.physics.gravity) + ")");
+  else if (deck.grid.is_periodic(axis))
+    diag.error(node->source(), path,
+               what + " needs the axis of gravity (" + std::string(1, "xyz"[axis]) +
+                   ") not periodic (grid.periodic)");
+}
+
+void check_initial_pressure(const toml::table& root, const Deck& deck, Diagnostics& diag) {
+  const auto* gas = root.get_as<toml::table>("gas");
+  const toml::node* node = gas ? gas->get("initial_pressure") : nullptr;
+  if (node && deck.gas.initial_pressure == "bed-weight")
+    check_layered(node, "gas.initial_pressure", "initial_pressure = \"bed-weight\"", deck, diag);
+}
+
+void check_pressure_probes(const toml::table& root, const Deck& deck, Diagnostics& diag) {
+  const auto* array = root.get_as<toml::array>("pressure_probe");
+  std::set<std::string> seen;
+  for (std::size_t i = 0; array && i < deck.pressure_probes.size() && i < array->size(); ++i) {
+    const auto& probe = deck.pressure_probes[i];
+    const auto* table = (*array)[i].as_table();
+    const std::string path = "pressure_probe[" + std::to_string(i) + "]";
+    if (!seen.insert(probe.name).second)
+      diag.error(table->source(), path + ".name", "duplicate pressure probe name \"" + probe.name + "\"");
+    if (probe.average == "layer") {
+      const toml::node* average = table->get("average");
+      check_layered(average ? average : table, path + ".average",
+                    "average = \"layer\" (the default)", deck, diag);
+    }
+  }
+}
+
 void read_material_and_models(const toml::table& root, Deck& deck, Diagnostics& diag) {
   const toml::table* solids = subtable(root, "solids", "solids", diag);
   read_section(solids, solids_section(), "solids", deck.solids.material, diag);
@@ -497,6 +536,10 @@ void read_all(const toml::table& root, Deck& deck, Diagnostics& diag) {
   check_solids_walls(root, deck, diag);
   deck.initial = read_array_of_tables(root, "initial", "initial", initial_section(), diag);
   check_initial_packing(root, deck, diag);
+  check_initial_pressure(root, deck, diag);
+  deck.pressure_probes = read_array_of_tables(root, "pressure_probe", "pressure_probe",
+                                              pressure_probe_section(), diag);
+  check_pressure_probes(root, deck, diag);
   read_section(subtable(root, "numerics", "numerics", diag), numerics_section(), "numerics",
                deck.numerics, diag);
   read_section(subtable(root, "output", "output", diag), output_section(), "output", deck.output,
@@ -684,6 +727,8 @@ std::string resolved_text(const Deck& d) {
   s << "\n[models.drag]\n" << show_section(drag_section(), d.models.drag);
   s << "\n[models.drag." << d.models.drag.name << "]\n" << show_coefficients(d.models.drag.coefficients);
   for (const auto& r : d.initial) s << "\n[[initial]]\n" << show_section(initial_section(), r);
+  for (const auto& p : d.pressure_probes)
+    s << "\n[[pressure_probe]]\n" << show_section(pressure_probe_section(), p);
   s << "\n[numerics]\n" << show_section(numerics_section(), d.numerics);
   s << "\n[output]\n" << show_section(output_section(), d.output);
   return s.str();
@@ -771,6 +816,20 @@ refuses, with exit code 2 and the line of the table or key:
 `--set` argument instead of the deck's line.
 )";
 
+// What a pressure probe measures (src/run/pressure_probe.hpp), for the key reference.
+const char* const pressure_probe_markdown = R"(
+Each probe adds the column `dp_<name>` [Pa] to monitor.csv: p_g at `lower` minus p_g at `upper`,
+after every step. With `average = "layer"` each end is the mean gas pressure of the layer of
+cells across gravity that holds the point (every fluid cell of that layer, on whichever rank it
+is, weighted by its area across gravity); with `average = "cell"` it is the gas pressure of the
+one cell that holds the point. A point on a face between two cells belongs to the upper cell (the
+last cell at the domain's upper end). `bagnold check` refuses a point outside the domain, a
+`cell` probe whose point lies in a blocked cell and a `layer` probe whose layer has no fluid
+cell. For the pressure drop across a bed, put `lower` in the first layer above the distributor
+and `upper` above the bed: the drop then leaves out the bed's weight below the first layer's
+centre (half a cell).
+)";
+
 template <class T>
 void reference_section(std::ostringstream& s, const Section<T>& section, const std::string& head) {
   reference_table(s, head + " — " + section.title, section.infos());
@@ -812,6 +871,8 @@ std::string key_reference_markdown() {
                     coefficient_infos(entry.coefficients));
   reference_section(s, initial_section(), "`[[initial]]`");
   s << region_selection_markdown;
+  reference_section(s, pressure_probe_section(), "`[[pressure_probe]]`");
+  s << pressure_probe_markdown;
   reference_section(s, numerics_section(), "`[numerics]`");
   reference_section(s, output_section(), "`[output]`");
   return s.str();

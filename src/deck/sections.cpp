@@ -19,6 +19,16 @@ bool Grid::is_periodic(int direction) const {
   return false;
 }
 
+int Physics::gravity_axis() const {
+  int axis = -1;
+  for (int d = 0; d < 3; ++d)
+    if (gravity[static_cast<std::size_t>(d)] != 0.0) {
+      if (axis >= 0) return -1;
+      axis = d;
+    }
+  return axis;
+}
+
 const Section<RunControl>& run_section() {
   static const Section<RunControl> s{"run", "Run control", {
       key(&RunControl::title, "title").init().doc("Free text shown in logs and snapshots."),
@@ -174,6 +184,13 @@ const Section<Gas>& gas_section() {
       key(&Gas::viscosity, "viscosity").unit("Pa s").init().above(0.0).doc("μ_g."),
       key(&Gas::reference_pressure, "reference_pressure").unit("Pa").init().above(0.0)
           .doc("Initial gas pressure at the top of the domain."),
+      key(&Gas::initial_pressure, "initial_pressure").init().one_of({"gas-weight", "bed-weight"})
+          .doc("Initial gas pressure below the top: gas-weight = reference_pressure + ρ_g g h "
+               "(the gas at rest); bed-weight = reference_pressure + the weight per area of the "
+               "gas and solids above (each layer of cells across gravity averaged over its "
+               "fluid cells, as MFIX's set_fluidbed_p when no initial pressure is given), the "
+               "gas carrying the bed as in a fluidized bed. bed-weight needs gravity along one "
+               "axis, not a periodic one."),
   }};
   return s;
 }
@@ -241,6 +258,24 @@ const Section<InitialRegion>& initial_section() {
                "(granular_energy = \"transport\"; MFIX's IC_THETA_M). Ignored by an algebraic "
                "Θ. A bed with Θ = 0 and no slip stays at Θ = 0: every production term is "
                "proportional to √Θ."),
+  }};
+  return s;
+}
+
+const Section<PressureProbe>& pressure_probe_section() {
+  static const Section<PressureProbe> s{"pressure_probe",
+                                        "Pressure probes ([[pressure_probe]], monitor columns)", {
+      key(&PressureProbe::name, "name").required()
+          .doc("The monitor column dp_<name> [Pa] = p_g(lower) − p_g(upper), every step."),
+      key(&PressureProbe::lower, "lower").unit("m").required()
+          .doc("A point inside the domain: the probe's first end."),
+      key(&PressureProbe::upper, "upper").unit("m").required()
+          .doc("A point inside the domain: the probe's second end."),
+      key(&PressureProbe::average, "average").init().one_of({"layer", "cell"})
+          .doc("What each end measures: layer = the mean p_g over the fluid cells of the layer "
+               "of cells across gravity that holds the point, weighted by their area across "
+               "gravity (needs gravity along one axis); cell = p_g of the fluid cell that "
+               "holds the point."),
   }};
   return s;
 }

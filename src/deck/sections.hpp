@@ -19,6 +19,7 @@ const Section<Solids>& solids_switch_section();  // solids.enabled, read with [s
 const Section<ModelChoice>& solids_stress_section();  // [models.solids_stress]
 const Section<ModelChoice>& drag_section();           // [models.drag]
 const Section<InitialRegion>& initial_section();  // [[initial]]
+const Section<PressureProbe>& pressure_probe_section();  // [[pressure_probe]]
 const Section<Numerics>& numerics_section();
 const Section<Output>& output_section();
 

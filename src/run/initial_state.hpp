@@ -1,6 +1,6 @@
 #pragma once
 // The state at t = 0 from the deck's [[initial]] regions (later regions win), with the gas
-// pressure hydrostatic from gas.reference_pressure at the top of the domain.
+// pressure of gas.initial_pressure (src/run/initial_gas_pressure.hpp). Collective.
 
 #include "src/deck/deck.hpp"
 #include "src/parallel/domain.hpp"

@@ -1,14 +1,18 @@
 #include "src/run/monitor_columns.hpp"
 
+#include "src/run/pressure_probe.hpp"
+
 namespace bagnold::run {
 
-std::vector<std::string> monitor_columns(const grid::BoundaryRegions& regions) {
+std::vector<std::string> monitor_columns(const grid::BoundaryRegions& regions,
+                                         const std::vector<deck::PressureProbe>& probes) {
   std::vector<std::string> columns = {"dt", "iterations", "residual", "inventory_gas_kg",
                                       "inventory_solids_kg"};
   for (const auto& r : regions.regions) {
     columns.push_back("flux_" + r.name + "_gas_kg_per_s");
     columns.push_back("flux_" + r.name + "_solids_kg_per_s");
   }
+  for (const auto& c : pressure_probe_columns(probes)) columns.push_back(c);
   return columns;
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 // The monitor's columns after time: dt, outer iterations, the largest normalized residual, the
-// inventory [kg] of each phase in the domain, and the mass flux [kg/s] of each phase through
-// each boundary region (positive out of the domain).
+// inventory [kg] of each phase in the domain, the mass flux [kg/s] of each phase through each
+// boundary region (positive out of the domain), and the pressure drop [Pa] of each
+// [[pressure_probe]] (src/run/pressure_probe.hpp).
 
 #include <string>
 #include <vector>
@@ -13,7 +14,8 @@
 
 namespace bagnold::run {
 
-std::vector<std::string> monitor_columns(const grid::BoundaryRegions& regions);
+std::vector<std::string> monitor_columns(const grid::BoundaryRegions& regions,
+                                         const std::vector<deck::PressureProbe>& probes);
 
 struct Inventory {
   double gas = 0.0;     // Σ ρ_g ε_g V [kg]

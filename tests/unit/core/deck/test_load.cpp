@@ -711,5 +711,60 @@ TEST(DeckErrors, EveryErrorIsCollected) {
   }
 }
 
+// ---------------------------------------------------------------------------------------------
+// Fluidized-bed options: gas.initial_pressure and [[pressure_probe]]
+
+TEST(DeckLoad, PressureProbesAndBedWeightPressure) {
+  const auto d = deck::load_deck_text(
+      deck_text("[gas]\ninitial_pressure = \"bed-weight\"\n"
+                "[[pressure_probe]]\nname = \"bed\"\nlower = [0.5, 0.5, 0.1]\nupper = [0.5, 0.5, 0.9]\n"
+                "[[pressure_probe]]\nname = \"wall\"\nlower = [0.1, 0.5, 0.1]\n"
+                "upper = [0.1, 0.5, 0.3]\naverage = \"cell\"\n"),
+      "deck.toml");
+  EXPECT_EQ(d.gas.initial_pressure, "bed-weight");
+  ASSERT_EQ(d.pressure_probes.size(), 2u);
+  EXPECT_EQ(d.pressure_probes[0].name, "bed");
+  EXPECT_EQ(d.pressure_probes[0].average, "layer");
+  EXPECT_EQ(d.pressure_probes[0].upper, (std::array<double, 3>{0.5, 0.5, 0.9}));
+  EXPECT_EQ(d.pressure_probes[1].average, "cell");
+  EXPECT_EQ(deck::load_deck_text(deck_text(), "deck.toml").gas.initial_pressure, "gas-weight");
+}
+
+TEST(DeckErrors, BedWeightPressureNeedsGravityAlongOneAxis) {
+  const std::string text =
+      deck_text("[physics]\ngravity = [1.0, 0.0, -9.81]\n[gas]\ninitial_pressure = \"bed-weight\"\n");
+  const auto errors = errors_of(text);
+  ASSERT_EQ(errors.size(), 1u) << report_of(errors);
+  const auto e = error_on(errors, "gas.initial_pressure");
+  EXPECT_EQ(e.line, line_of(text, "initial_pressure"));
+  EXPECT_TRUE(contains(e.message, "needs gravity along one axis")) << e.message;
+}
+
+TEST(DeckErrors, LayerProbeNeedsTheGravityAxisNotPeriodic) {
+  const std::string text = deck_text(
+      "[grid]\nperiodic = [\"z\"]\n"
+      "[[pressure_probe]]\nname = \"bed\"\nlower = [0.5, 0.5, 0.1]\nupper = [0.5, 0.5, 0.9]\n");
+  const auto errors = errors_of(text);
+  ASSERT_EQ(errors.size(), 1u) << report_of(errors);
+  const auto e = error_on(errors, "pressure_probe[0].average");
+  EXPECT_EQ(e.line, line_of(text, "[[pressure_probe]]"));
+  EXPECT_TRUE(contains(e.message, "not periodic")) << e.message;
+}
+
+TEST(DeckErrors, PressureProbeNamesAndPoints) {
+  const std::string text = deck_text(
+      "[[pressure_probe]]\nname = \"a\"\nlower = [0.5, 0.5, 0.1]\nupper = [0.5, 0.5, 0.9]\n"
+      "[[pressure_probe]]\nname = \"a\"\nlower = [0.5, 0.5, 0.1]\nupper = [0.5, 0.5]\n"
+      "[[pressure_probe]]\nname = \"c\"\nupper = [0.5, 0.5, 0.9]\naverage = \"plane\"\n");
+  const auto errors = errors_of(text);
+  EXPECT_TRUE(contains(error_on(errors, "pressure_probe[1].name").message,
+                       "duplicate pressure probe name \"a\""));
+  EXPECT_EQ(error_on(errors, "pressure_probe[1].upper").line, line_of(text, "upper = [0.5, 0.5]\n"));
+  EXPECT_TRUE(contains(error_on(errors, "pressure_probe[2].lower").message, "missing"))
+      << report_of(errors);
+  EXPECT_TRUE(contains(error_on(errors, "pressure_probe[2].average").message, "layer"))
+      << report_of(errors);
+}
+
 }  // namespace
 }  // namespace bagnold::tests

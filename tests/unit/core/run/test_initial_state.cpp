@@ -1,11 +1,16 @@
 // The state at t = 0: [[initial]] regions in deck order (later wins) on fluid cells, ε_g = 1 − ε_s,
-// and the gas pressure hydrostatic from gas.reference_pressure at the top along gravity.
+// and the gas pressure hydrostatic from gas.reference_pressure at the top along gravity: the
+// gas's weight (gas-weight) or the gas's and solids' (bed-weight, against the column's weight per
+// area from the phases' inventory).
 // Run on 1 and 2 ranks: every stored cell, owned or halo, gets the same values.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <map>
 
 #include "src/run/initial_state.hpp"
+#include "src/run/monitor_columns.hpp"
 #include "tests/support/deck_domain.hpp"
 #include "tests/support/test_decks.hpp"
 
@@ -72,6 +77,91 @@ TEST(InitialState, RegionsInOrderLaterWins) {
     EXPECT_EQ(s.state.solids_velocity[2][i], z < 0.01 ? -1.0 : 0.0);
   }
   EXPECT_GT(fluid, 0);
+}
+
+// A 2 × 2 column of 10 stretched layers (0.1 m, the top layer twice the bottom one) with a bed
+// of ε_s = 0.5 in the layers whose centres lie at or below 5 cm, gravity `g_z` along z.
+std::string bed_deck(double g_z, const std::string& initial_pressure, double solids_fraction = 0.5) {
+  const std::string bed = g_z < 0 ? "max = [1.0, 1.0, 0.05]\n" : "min = [-1.0, -1.0, 0.05]\n";
+  return "[run]\nend_time = 0.1\n"
+         "[physics]\ngravity = [0.0, 0.0, " + std::to_string(g_z) + "]\n"
+         "[grid.x]\nmax = 0.02\ncells = 2\n[grid.y]\nmax = 0.02\ncells = 2\n"
+         "[grid.z]\nmax = 0.1\ncells = 10\nratio = 2.0\n"
+         "[output]\ndirectory = \"out\"\n"
+         "[gas]\ndensity = 1.5\nreference_pressure = 1e5\ninitial_pressure = \"" +
+         initial_pressure + "\"\n"
+         "[solids]\ndensity = 2000.0\n[models.solids_stress]\nmodel = \"plastic\"\n"
+         "[[initial]]\n" + bed + "solids_fraction = " + std::to_string(solids_fraction) + "\n";
+}
+
+// The face of the grid's z axis between the bed's layers and the gas's: the first face above a
+// bed cell's centre (gravity −z) or below it (gravity +z).
+double bed_surface(const Initialized& s, bool down_is_minus) {
+  const auto& faces = s.domain.grid.axis(2).faces();
+  for (std::size_t k = 0; k + 1 < faces.size(); ++k) {
+    const double centre = 0.5 * (faces[k] + faces[k + 1]);
+    if (down_is_minus && centre > 0.05) return faces[k];
+    if (!down_is_minus && centre >= 0.05) return faces[k];
+  }
+  return faces.back();
+}
+
+TEST(InitialState, BedWeightPressureCarriesTheColumnAbove) {
+  for (const double g : {-9.81, 9.81}) {
+    const bool down_is_minus = g < 0;
+    const Initialized s(bed_deck(g, "bed-weight"));
+    const auto& layout = s.domain.layout;
+    const double top = down_is_minus ? 0.1 : 0.0;  // where p = reference_pressure
+    const double surface = bed_surface(s, down_is_minus);
+    const double rho_g = 1.5, rho_s = 2000.0, phi = 0.5, weight = std::abs(g);
+    // p at height z: p_ref + |g| ∫ (ε_g ρ_g + ε_s ρ_s) along the way up to the top.
+    auto expected = [&](double z) {
+      const double depth = std::abs(top - z);
+      const double in_bed = down_is_minus ? std::max(0.0, surface - z) : std::max(0.0, z - surface);
+      return 1e5 + weight * (rho_g * depth + phi * (rho_s - rho_g) * in_bed);
+    };
+    int fluid = 0;
+    for (int l = 0; l < layout.local_count(); ++l) {
+      if (layout.kind(l) != grid::CellKind::fluid) continue;
+      ++fluid;
+      const double z = s.domain.grid.centre(layout.index3(l))[2];
+      EXPECT_NEAR(s.state.gas_pressure[static_cast<std::size_t>(l)], expected(z), 1e-9)
+          << "g = " << g << ", z = " << z;
+    }
+    EXPECT_GT(fluid, 0);
+    // At the floor (the lowest layer's centre plus its half layer's weight), the whole column's
+    // weight per area: (gas + solids inventory) |g| / A.
+    const auto inventory = run::phase_inventory(s.deck, s.domain, s.state);
+    const double column = (inventory.gas + inventory.solids) * weight / (0.02 * 0.02);
+    const auto& z_axis = s.domain.grid.axis(2);
+    const int bottom = down_is_minus ? 0 : z_axis.cells() - 1;
+    const double half = 0.5 * z_axis.width(bottom) * weight * (phi * rho_s + (1 - phi) * rho_g);
+    for (int l = 0; l < layout.local_count(); ++l)
+      if (layout.kind(l) == grid::CellKind::fluid && layout.index3(l)[2] == bottom) {
+        EXPECT_NEAR(s.state.gas_pressure[static_cast<std::size_t>(l)] + half - 1e5, column,
+                    1e-9 * column);
+        EXPECT_GT(column, 0.5 * phi * rho_s * weight * 0.04);  // the bed, not the gas alone
+      }
+  }
+}
+
+TEST(InitialState, BedWeightWithoutSolidsIsTheGasWeight) {
+  const Initialized bed(bed_deck(-9.81, "bed-weight", 0.0));
+  const Initialized gas(bed_deck(-9.81, "gas-weight", 0.0));
+  ASSERT_EQ(bed.domain.layout.local_count(), gas.domain.layout.local_count());
+  for (int l = 0; l < bed.domain.layout.local_count(); ++l)
+    EXPECT_NEAR(bed.state.gas_pressure[static_cast<std::size_t>(l)],
+                gas.state.gas_pressure[static_cast<std::size_t>(l)], 1e-8)
+        << "cell " << l << " (ring cells included)";
+}
+
+TEST(InitialState, GasWeightIgnoresTheSolids) {
+  const Initialized s(bed_deck(-9.81, "gas-weight"));
+  const auto& layout = s.domain.layout;
+  for (int l = 0; l < layout.local_count(); ++l) {
+    const double z = s.domain.grid.centre(layout.index3(l))[2];
+    EXPECT_NEAR(s.state.gas_pressure[static_cast<std::size_t>(l)], 1e5 + 1.5 * 9.81 * (0.1 - z), 1e-9);
+  }
 }
 
 TEST(FlowState, EverySnapshotFieldHasItsSIUnits) {

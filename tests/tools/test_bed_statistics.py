@@ -1,0 +1,155 @@
+#!/usr/bin/python3
+"""Tests of tools/bed-statistics on a synthetic 2-D bed whose statistics are known by construction.
+
+A 0.2 × 1 m column of 20 × 100 cells, one cell thick. At t = 0 a bed of ε_s = 0.55 fills it to
+0.5 m (H0); later snapshots have their bed surface on chosen faces, two bubbles (a 6 × 6-cell
+square centred at mid-bed, a 2 × 2-cell one near the top) and an erupting void at the surface,
+which is not a bubble. monitor.csv carries a pressure drop of the bed's weight per area plus a
+3 Hz oscillation, on uneven steps. Run from the source root:
+/usr/bin/python3 tests/tools/test_bed_statistics.py (keep the files with BAGNOLD_KEEP_TMP=1).
+"""
+import os
+import shutil
+import sys
+import tempfile
+import unittest
+
+import h5py
+import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from test_post_processing import read_png, run  # noqa: E402
+
+NX, NZ = 20, 100
+XF, YF, ZF = np.linspace(-0.1, 0.1, NX + 1), np.array([0.0, 0.01]), np.linspace(0.0, 1.0, NZ + 1)
+TIMES = [0.0, 0.25, 0.5, 0.75, 1.0, 1.25, 1.5, 1.75, 2.0]
+SURFACE = {0.0: 50, 0.25: 56, 0.5: 60, 0.75: 62, 1.0: 58, 1.25: 61, 1.5: 59, 1.75: 63, 2.0: 60}  # layers
+PHI, RHO_S, G = 0.55, 2000.0, 9.81
+SOLIDS_KG = RHO_S * PHI * 0.2 * 0.01 * 0.5
+WEIGHT = G * SOLIDS_KG / (0.2 * 0.01)  # Pa
+FREQUENCY = 3.0  # Hz
+MID_SQUARE = 6  # cells a side
+DECK = "[physics]\ngravity = [0.0, 0.0, -9.81]\n"
+
+
+def write_snapshots(run_dir):
+    os.makedirs(run_dir, exist_ok=True)
+    for step, time in enumerate(TIMES):
+        phi = np.zeros((NZ, 1, NX))
+        top = SURFACE[time]
+        phi[:top] = PHI
+        if time > 0.0:
+            phi[22:22 + MID_SQUARE, 0, 5:5 + MID_SQUARE] = 0.0  # centroid z = 0.25 m, x = −0.02 m
+            phi[44:46, 0, 14:16] = 0.05                          # centroid z = 0.45 m
+            phi[top - 2:top, 0, 1] = 0.05                        # erupting: reaches the surface
+        with h5py.File(os.path.join(run_dir, f"snapshot_{step:06d}.h5"), "w") as f:
+            f.attrs.update(time=time, step=step * 100, dt=1e-3, format_version=1,
+                           bagnold_version="test", title="synthetic bed", deck=DECK)
+            for name, faces in (("x_faces", XF), ("y_faces", YF), ("z_faces", ZF)):
+                f[f"grid/{name}"] = faces
+            f["grid/cell_flags"] = np.ones((NZ, 1, NX), dtype=np.uint8)
+            f["fields/solids_fraction"] = phi
+            f["fields/gas_fraction"] = 1.0 - phi
+
+
+def write_monitor(run_dir, probes=("bed",)):
+    rng = np.random.default_rng(3)
+    dts = rng.uniform(0.8e-3, 1.2e-3, 2600)
+    t = np.cumsum(dts)
+    keep = t <= 2.0
+    t, dts = t[keep], dts[keep]
+    dp = WEIGHT * (1.0 + 0.02 * np.sin(2 * np.pi * FREQUENCY * t))
+    names = ["time", "dt", "inventory_solids_kg"] + [f"dp_{p}" for p in probes]
+    with open(os.path.join(run_dir, "monitor.csv"), "w") as f:
+        f.write(",".join(names) + "\n")
+        for i in range(len(t)):
+            f.write(",".join(f"{v:.17g}" for v in [t[i], dts[i], SOLIDS_KG] + [dp[i]] * len(probes)) + "\n")
+    return t, dts, dp
+
+
+def last_lines(out):
+    values = {}
+    for line in out.splitlines():
+        if " = " in line and line.split(" = ")[0].isidentifier():
+            key, value = line.split(" = ")
+            values[key] = float(value)
+    return values
+
+
+class BedStatistics(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.tmp = tempfile.mkdtemp(prefix="bagnold_bed_")
+        cls.run_dir = os.path.join(cls.tmp, "run")
+        write_snapshots(cls.run_dir)
+        cls.t, cls.dt, cls.dp = write_monitor(cls.run_dir)
+
+    @classmethod
+    def tearDownClass(cls):
+        if os.environ.get("BAGNOLD_KEEP_TMP"):
+            print(f"kept {cls.tmp}", file=sys.stderr)
+        else:
+            shutil.rmtree(cls.tmp)
+
+    def statistics(self, *args, run_dir=None):
+        code, out, err = run("bed-statistics", run_dir or self.run_dir, *args)
+        self.assertEqual(code, 0, err)
+        self.assertNotIn("Traceback", err)
+        return last_lines(out), out
+
+    def test_known_statistics(self):
+        values, out = self.statistics("--darton", "0.25,0.06")
+        self.assertEqual(values["bed_height_H0_m"], 0.5)
+        window = [SURFACE[t] * 0.01 / 0.5 for t in TIMES if t >= 0.5]
+        self.assertAlmostEqual(values["mean_expansion_H_over_H0"], np.mean(window), places=5)
+        self.assertEqual(values["bubbles_per_snapshot"], 2.0)  # not the erupting void
+        square = MID_SQUARE * 0.01
+        self.assertAlmostEqual(values["mid_bed_bubble_diameter_m"], np.sqrt(4 * square ** 2 / np.pi), places=5)
+        keep = (self.t > 0.5) & (self.t <= 2.0)
+        mean = np.sum(self.dp[keep] * self.dt[keep]) / np.sum(self.dt[keep])
+        self.assertAlmostEqual(values["mean_pressure_drop_Pa"], mean, places=2)
+        self.assertAlmostEqual(values["pressure_drop_over_weight"], mean / WEIGHT, places=6)
+        self.assertLessEqual(abs(values["dominant_frequency_Hz"] - FREQUENCY), 1.0 / 1.5)
+        darton = 0.54 * 0.19 ** 0.4 * 0.25 ** 0.8 / G ** 0.2
+        self.assertIn(f"D = {darton:.4g} m", out)
+
+    def test_window_and_thresholds(self):
+        values, _ = self.statistics("--start", "1.0", "--end", "1.5")
+        self.assertAlmostEqual(values["mean_expansion_H_over_H0"], (0.58 + 0.61 + 0.59) / 1.5, places=5)
+        # A bubble threshold below the small bubble's 0.05 leaves only the mid-bed square.
+        values, _ = self.statistics("--bubble-threshold", "0.01")
+        self.assertEqual(values["bubbles_per_snapshot"], 1.0)
+        # A mid-bed band of ±0.25 m takes in the small bubble (centroid 0.45 m) too.
+        values, _ = self.statistics("--mid-band", "0.5")
+        both = 0.5 * (np.sqrt(4 * 0.06 ** 2 / np.pi) + np.sqrt(4 * 0.02 ** 2 / np.pi))
+        self.assertAlmostEqual(values["mid_bed_bubble_diameter_m"], both, places=5)
+
+    def test_figures(self):
+        folder = os.path.join(self.tmp, "figures")
+        self.statistics("--figures", folder)
+        for name in ("bed-height.png", "pressure-drop.png", "solids-fraction.png"):
+            read_png(self, os.path.join(folder, name))
+
+    def test_bad_inputs(self):
+        code, _, err = run("bed-statistics", os.path.join(self.tmp, "missing"))
+        self.assertEqual(code, 1)
+        self.assertIn("does not exist", err)
+        code, _, err = run("bed-statistics", self.run_dir, "--start", "5")
+        self.assertEqual(code, 1)
+        self.assertIn("no snapshot in the window", err)
+        code, _, err = run("bed-statistics", self.run_dir, "--probe", "riser")
+        self.assertEqual(code, 1)
+        self.assertIn("dp_riser", err)
+        two = os.path.join(self.tmp, "two_probes")
+        write_snapshots(two)
+        write_monitor(two, probes=("bed", "freeboard"))
+        code, _, err = run("bed-statistics", two)
+        self.assertEqual(code, 1)
+        self.assertIn("choose one with --probe", err)
+        self.assertNotIn("Traceback", err)
+        values, _ = self.statistics("--probe", "freeboard", run_dir=two)
+        self.assertTrue(np.isfinite(values["mean_pressure_drop_Pa"]))
+
+
+if __name__ == "__main__":
+    unittest.main()

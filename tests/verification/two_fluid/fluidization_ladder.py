@@ -1,7 +1,11 @@
 #!/usr/bin/python3
 """Minimum fluidization by a ladder of inflow velocities (packed_bed.toml, one run per rung).
 
-usage: fluidization_ladder.py --bagnold BAGNOLD [--mpiexec MPIEXEC] DECK OUT_DIR
+usage: fluidization_ladder.py --bagnold BAGNOLD [--mpiexec MPIEXEC] [--packed EPS_S]
+                              [--set KEY=VALUE ...] DECK OUT_DIR
+
+--set overrides go to every rung (another closure: its model, coefficients and the initial
+ε_s); --packed is then that closure's packed fraction ε_s* (default 0.6, the plastic closure's).
 
 Each rung runs the packed bed deck with another inlet gas velocity. ΔP is the gas pressure
 drop from the bottom cell's centre to the top cell's centre less the gas head ρ_g g Δz, W the
@@ -38,8 +42,9 @@ PLATEAU_TOLERANCE = 0.03
 
 
 def run_rung(args, u, end_time, out):
+    extra = [item for setting in args.set for item in ("--set", setting)]
     command = ([args.mpiexec, "--oversubscribe", "-np", "1"] if args.mpiexec else []) + [
-        args.bagnold, "run", args.deck, "--set", f"output.directory={out}",
+        args.bagnold, "run", args.deck, *extra, "--set", f"output.directory={out}",
         "--set", "output.progress=never", "--set", f"boundary[0].gas_velocity=[0.0,0.0,{u}]",
         "--set", f"run.end_time={end_time}", "--set", "output.snapshot_interval=0.02"]
     subprocess.run(["rm", "-rf", out], check=True)
@@ -79,6 +84,8 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--bagnold", required=True)
     parser.add_argument("--mpiexec", default=None)
+    parser.add_argument("--packed", type=float, default=0.6)
+    parser.add_argument("--set", action="append", default=[])
     parser.add_argument("deck")
     parser.add_argument("out")
     args = parser.parse_args()
@@ -108,13 +115,13 @@ def main():
     spread = max(abs(f[1] / f[2] - 1.0) for f in fluidized)
     u_mf = (-a + np.sqrt(a * a + 4 * b * plateau)) / (2 * b)
     eps_packed = float(packed[-1][3])
-    analytic = balance(0.6)
+    analytic = balance(args.packed)
     error = abs(u_mf - analytic) / analytic
     print(f"Ergun fit through the packed rungs: ΔP = {a:.2f} U + {b:.2f} U²")
     print(f"plateau {plateau:.2f} Pa against W = {weight:.2f} Pa; fluidized rungs within "
           f"{spread * 100:.2f} % of W (bound {PLATEAU_TOLERANCE * 100:g} %)")
     ok &= spread < PLATEAU_TOLERANCE
-    print(f"U_mf measured {u_mf:.4f} m/s; Ergun/weight balance at ε_s* = 0.6: {analytic:.4f} m/s, "
+    print(f"U_mf measured {u_mf:.4f} m/s; Ergun/weight balance at ε_s* = {args.packed}: {analytic:.4f} m/s, "
           f"relative difference {error:.2e} (bound {UMF_TOLERANCE:g}); at the highest packed "
           f"rung's ε_s = {eps_packed:.4f} it would be {balance(eps_packed):.4f} m/s")
     ok &= error < UMF_TOLERANCE

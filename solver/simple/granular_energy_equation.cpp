@@ -1,6 +1,8 @@
 // The granular energy equation (granular_energy_equation.hpp).
 #include "solver/simple/granular_energy_equation.hpp"
 
+#include "solver/simple/solids_wall.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -66,19 +68,12 @@ std::array<double, 2> GranularEnergyEquation::wall_flux_coefficients(const run::
   const auto& wall = *m_walls[static_cast<std::size_t>(r)];
   const auto& layout = m_discretization.layout();
   const auto& region = m_discretization.domain().regions.regions[static_cast<std::size_t>(r)];
-  const int normal = parallel::face_direction(face);
-  double slip2 = 0.0;  // tangential slip at the cell centre
-  for (int a = 0; a < 3; ++a) {
-    if (a == normal) continue;
-    const double slip = centre_velocity(layout, state.solids_velocity[static_cast<std::size_t>(a)], l, a) -
-                        region.wall_velocity[static_cast<std::size_t>(a)];
-    slip2 += slip * slip;
-  }
+  const double slip = tangential_slip_speed(layout, state, l, parallel::face_direction(face), region.wall_velocity);
   const double phi = m_fraction[static_cast<std::size_t>(l)];
   const double g0 = m_closure.wall_radial_distribution(m_material, phi);
   // q_w scales as √Θ (generation) and Θ^{3/2} (loss): both from the flux at Θ = 1.
   const double loss = -models::wall::johnson_jackson_energy_flux(wall, m_material, phi, g0, 1.0, 0.0);
-  const double gain = models::wall::johnson_jackson_energy_flux(wall, m_material, phi, g0, 1.0, std::sqrt(slip2)) + loss;
+  const double gain = models::wall::johnson_jackson_energy_flux(wall, m_material, phi, g0, 1.0, slip) + loss;
   return {gain, loss};
 }
 

@@ -6,6 +6,18 @@
 
 namespace bagnold::solver {
 
+double tangential_slip_speed(const parallel::Layout& layout, const run::FlowState& state, int l,
+                             int normal, const std::array<double, 3>& wall_velocity) {
+  double slip2 = 0.0;
+  for (int a = 0; a < 3; ++a) {
+    if (a == normal) continue;
+    const auto ua = static_cast<std::size_t>(a);
+    const double slip = centre_velocity(layout, state.solids_velocity[ua], l, a) - wall_velocity[ua];
+    slip2 += slip * slip;
+  }
+  return std::sqrt(slip2);
+}
+
 std::vector<std::unique_ptr<models::wall::WallLaw>> solids_wall_laws(
     const deck::Deck& deck, const grid::BoundaryRegions& regions,
     const models::SolidsStressModel& closure) {
@@ -58,14 +70,7 @@ double SolidsWallCoefficients::coefficient(const Discretization& discretization,
     near.viscosity += closures.viscosity[solids][i];
     near.strain_rate += closures.strain_rate[i];
     near.temperature += state.granular_temperature[i];
-    double slip2 = 0.0;  // tangential slip at the cell centre
-    for (int a = 0; a < 3; ++a) {
-      if (a == e) continue;
-      const double slip = centre_velocity(layout, state.solids_velocity[static_cast<std::size_t>(a)], c, a) -
-                          region.wall_velocity[static_cast<std::size_t>(a)];
-      slip2 += slip * slip;
-    }
-    near.slip_speed += std::sqrt(slip2);
+    near.slip_speed += tangential_slip_speed(layout, state, c, e, region.wall_velocity);
     ++count;
   }
   if (count == 0) return held = 0.0;

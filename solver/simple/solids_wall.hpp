@@ -23,6 +23,11 @@
 
 namespace bagnold::solver {
 
+// |u_s − U_wall| tangential to a wall whose normal is along `normal`, at the centre of local
+// cell l (both tangential components).
+double tangential_slip_speed(const parallel::Layout& layout, const run::FlowState& state, int l,
+                             int normal, const std::array<double, 3>& wall_velocity);
+
 // The solids' wall law of each boundary region, in region order: the region's solids_wall for
 // a wall (no_slip_wall, moving_wall), no-slip for any other region. `closure` must outlive them.
 std::vector<std::unique_ptr<models::wall::WallLaw>> solids_wall_laws(

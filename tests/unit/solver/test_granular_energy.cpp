@@ -62,6 +62,22 @@ std::array<double, 2> unit_terms(const models::GranularEnergyTheory& theory, con
   return {mu[0], c[0]};
 }
 
+// `steps` pseudo-time steps of 1 s of the equation alone, each from the last: its steady state.
+bool settle(Case& c, solver::GranularEnergyEquation& equation, const solver::ClosureFields& fields,
+            const solver::CarriedFractions& carried, int steps) {
+  for (int k = 0; k < steps; ++k) {
+    c.old = c.state;
+    solver::IterationSums sums;
+    solver::WorstCells worst;
+    solver::StepResult record;
+    if (!equation.solve(c.old, 1.0, fields, carried, c.state, sums, worst, record)) {
+      ADD_FAILURE() << record.failure;
+      return false;
+    }
+  }
+  return true;
+}
+
 // Θ(2 t₀)/Θ_Haff − 1 after steps of t₀/steps_per_t0.
 double haff_error(int steps_per_t0, const std::string& closure) {
   const double phi = 0.3, theta0 = 1e-2;
@@ -106,13 +122,7 @@ TEST(GranularEnergy, SteadySimpleShearBalancesProductionAndDissipation) {
     std::fill(fields.strain_rate.begin(), fields.strain_rate.end(), rate);
     solver::CarriedFractions carried(static_cast<std::size_t>(c.local_count()));
     // Pseudo-time steps from the last iterate: the steady state is the local balance.
-    for (int k = 0; k < 80; ++k) {
-      c.old = c.state;
-      solver::IterationSums sums;
-      solver::WorstCells worst;
-      solver::StepResult record;
-      ASSERT_TRUE(equation.solve(c.old, 1.0, fields, carried, c.state, sums, worst, record)) << record.failure;
-    }
+    ASSERT_TRUE(settle(c, equation, fields, carried, 80));
     const auto& material = c.deck.solids.material;
     const auto [shear, dissipation] = unit_terms(*closures.stress()->granular_energy(), material, phi);
     const double expected = shear * rate * rate / dissipation;
@@ -184,13 +194,7 @@ TEST(GranularEnergy, JohnsonJacksonWallsHeatASlidingPlug) {
   solver::GranularEnergyEquation equation(c.disc, closures, c.deck.solids.material.density);
   solver::ClosureFields fields(static_cast<std::size_t>(c.local_count()));  // no shear
   solver::CarriedFractions carried(static_cast<std::size_t>(c.local_count()));
-  for (int k = 0; k < 100; ++k) {
-    c.old = c.state;
-    solver::IterationSums sums;
-    solver::WorstCells worst;
-    solver::StepResult record;
-    ASSERT_TRUE(equation.solve(c.old, 1.0, fields, carried, c.state, sums, worst, record)) << record.failure;
-  }
+  ASSERT_TRUE(settle(c, equation, fields, carried, 100));
   const auto& m = c.deck.solids.material;
   const auto* closure = closures.stress();
   const models::wall::JohnsonJacksonWall wall{0.5, 0.9, closure->packing_limit(m)};

@@ -67,8 +67,16 @@ def main():
         json.dump(expected, out)
     png = os.path.join(run_dir, "slice.png")
     check = os.path.join(os.path.dirname(os.path.abspath(__file__)), "check_in_paraview.py")
-    result = subprocess.run([xvfb, "-a", pvpython, "--force-offscreen-rendering", check,
-                             os.path.join(run_dir, "run.xmf"), expected_path, png])
+    # A loaded machine's X server sometimes refuses pvpython's connection before it has read
+    # anything ("bad X server connection", abort): that is the display, not the run, so retry.
+    for attempt in range(1, 4):
+        result = subprocess.run([xvfb, "-a", pvpython, "--force-offscreen-rendering", check,
+                                 os.path.join(run_dir, "run.xmf"), expected_path, png],
+                                stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+        sys.stdout.write(result.stdout)
+        if result.returncode == 0 or "bad X server connection" not in result.stdout:
+            break
+        print(f"pvpython could not connect to the X server (attempt {attempt} of 3)")
     if result.returncode != 0:
         print(f"FAIL: pvpython exited with {result.returncode}")
         return 1

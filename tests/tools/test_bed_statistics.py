@@ -29,7 +29,10 @@ SOLIDS_KG = RHO_S * PHI * 0.2 * 0.01 * 0.5
 WEIGHT = G * SOLIDS_KG / (0.2 * 0.01)  # Pa
 FREQUENCY = 3.0  # Hz
 MID_SQUARE = 6  # cells a side
-DECK = "[physics]\ngravity = [0.0, 0.0, -9.81]\n"
+RHO_G = 1.2
+# The probe spans z = 5 mm to 995 mm: the bed below the surface, gas above.
+DECK = ("[physics]\ngravity = [0.0, 0.0, -9.81]\n[gas]\ndensity = 1.2\n[solids]\ndensity = 2000.0\n"
+        "[[pressure_probe]]\nname = \"bed\"\nlower = [0.0, 0.005, 0.005]\nupper = [0.0, 0.005, 0.995]\n")
 
 
 def write_snapshots(run_dir):
@@ -109,6 +112,17 @@ class BedStatistics(unittest.TestCase):
         mean = np.sum(self.dp[keep] * self.dt[keep]) / np.sum(self.dt[keep])
         self.assertAlmostEqual(values["mean_pressure_drop_Pa"], mean, places=2)
         self.assertAlmostEqual(values["pressure_drop_over_weight"], mean / WEIGHT, places=6)
+        # Between 5 and 995 mm: each snapshot's layers' mean ε_s (the bubbles lower it).
+        between = []
+        for t in (t for t in TIMES if t >= 0.5):
+            top, column = SURFACE[t] * 0.01, []
+            solids = PHI * (top - 0.005) * 0.2 - 0.06 * 0.06 * PHI - 0.02 * 0.02 * (PHI - 0.05) \
+                - 0.02 * 0.01 * (PHI - 0.05)  # ε_s · area in the x–z plane, less the voids
+            solids_per_width = solids / 0.2
+            between.append(G * (RHO_S * solids_per_width + RHO_G * (0.99 - solids_per_width)))
+        # (the key lines carry 6 significant digits)
+        self.assertLess(abs(values["weight_between_probe_ends_Pa"] / np.mean(between) - 1.0), 1e-5)
+        self.assertLess(abs(values["pressure_drop_over_weight_between"] * np.mean(between) / mean - 1.0), 1e-5)
         self.assertLessEqual(abs(values["dominant_frequency_Hz"] - FREQUENCY), 1.0 / 1.5)
         darton = 0.54 * 0.19 ** 0.4 * 0.25 ** 0.8 / G ** 0.2
         self.assertIn(f"D = {darton:.4g} m", out)

@@ -2,10 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 
-#include "src/run/agree.hpp"
+#include "src/io/agree.hpp"
 #include "src/run/run_directory.hpp"
 
 namespace bagnold::run {
@@ -44,7 +45,10 @@ OutputWriter::OutputWriter(const deck::Deck& deck, const parallel::Domain& domai
 void OutputWriter::check_room(const std::string& path, const io::SnapshotInfo& info) const {
   const auto& comm = m_domain.layout.comm();
   std::string problem;
-  if (comm.is_root()) {
+  // Test-only (tests/reliability/disk_full_in_write.sh): without the check, a small disk fills
+  // inside a snapshot's HDF5 calls, the failure the writer must survive on every rank.
+  static const bool skipped = std::getenv("BAGNOLD_TEST_SKIP_ROOM_CHECK") != nullptr;
+  if (comm.is_root() && !skipped) {
     // The run's snapshots differ in size only by their attributes (time_step_memory grows).
     const std::uintmax_t needed =
         m_largest > 0 ? m_largest + 8192
@@ -129,7 +133,7 @@ std::string OutputWriter::write(const FlowState& state, double time, long step, 
   io::write_snapshot(path, m_domain.layout, m_domain.flags, state.views(), info, m_viewing.of(state));
   note_size(path);
   m_index.push_back({name, time, {}, m_viewing.opening_face_count()});
-  agree(m_domain.layout.comm(), [&] {
+  io::agree(m_domain.layout.comm(), [&] {
     if (m_domain.layout.comm().is_root())
       io::write_file_atomically((fs::path(m_directory) / "run.xmf").string(),
                                 io::xdmf_text(m_domain.grid, m_index, ViewingFields::indexed_fields()));

@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "src/io/agree.hpp"
+#include "src/io/disk_reservation.hpp"
 #include "src/io/failed_file.hpp"
 #include "src/io/hdf5_handle.hpp"
 #include "src/io/snapshot_check.hpp"
@@ -39,6 +40,16 @@ File open_parallel(const std::string& path, MPI_Comm comm, bool create) {
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
   PropertyList access(check(H5Pcreate(H5P_FILE_ACCESS), "H5Pcreate(file access)"));
   check_status(H5Pset_fapl_mpio(access.get(), comm, MPI_INFO_NULL), "H5Pset_fapl_mpio");
+  if (create) {
+    // Rank 0 writes all the metadata. With HDF5 1.10's default (the ranks share the metadata
+    // writes), a write that fails makes its rank skip the barrier that ends the flush, and the
+    // others wait there for good; with rank 0 alone, HDF5 reports the failure after the barrier.
+    H5AC_cache_config_t cache;
+    cache.version = H5AC__CURR_CACHE_CONFIG_VERSION;
+    check_status(H5Pget_mdc_config(access.get(), &cache), "H5Pget_mdc_config");
+    cache.metadata_write_strategy = H5AC_METADATA_WRITE_STRATEGY__PROCESS_0_ONLY;
+    check_status(H5Pset_mdc_config(access.get(), &cache), "H5Pset_mdc_config");
+  }
   if (create)
     return File(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.get()));
   return File(H5Fopen(path.c_str(), H5F_ACC_RDONLY, access.get()));
@@ -488,7 +499,7 @@ std::uintmax_t snapshot_size_estimate(const parallel::Layout& layout, const grid
 
 void write_snapshot(const std::string& path, const parallel::Layout& layout,
                     const grid::CellFlags& flags, const std::vector<FieldView>& fields,
-                    const SnapshotInfo& info, const ViewingData& viewing) {
+                    const SnapshotInfo& info, const ViewingData& viewing, std::uintmax_t reserve) {
   const std::string temporary = path + ".tmp";
   const auto& comm = layout.comm();
   const Steps step(comm);
@@ -498,6 +509,9 @@ void write_snapshot(const std::string& path, const parallel::Layout& layout,
     step([&] {
       file = open_parallel(temporary, comm.get(), true);
       if (file.get() < 0) throw Hdf5Error("cannot create snapshot file " + temporary);
+    });
+    step([&] {
+      if (comm.is_root() && reserve > 0) reserve_disk_space(temporary, reserve);
     });
     step([&] {
       write_attribute(file.get(), "time", info.time);
@@ -600,7 +614,9 @@ void write_snapshot(const std::string& path, const parallel::Layout& layout,
     throw Hdf5Error("cannot write the snapshot " + path + " (" + e.what() + "; disk full?)");
   }
   agree(comm, [&] {
-    if (comm.is_root() && std::rename(temporary.c_str(), path.c_str()) != 0)
+    if (!comm.is_root()) return;
+    release_unused_reservation(temporary);
+    if (std::rename(temporary.c_str(), path.c_str()) != 0)
       throw Hdf5Error("cannot rename " + temporary + " to " + path);
   });
 }

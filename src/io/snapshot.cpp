@@ -409,10 +409,7 @@ void write_openings(hid_t file, const parallel::Communicator& comm, const Openin
 }
 
 // After an agreed failure: the file is left open (failed_file.hpp says why).
-void abandon_after_failed_write(File& file) {
-  if (std::getenv("BAGNOLD_EXPERIMENT_CLOSE")) { file.reset(); return; }  // EXPERIMENT
-  leave_failed_file_open(file.release());
-}
+void abandon_after_failed_write(File& file) { leave_failed_file_open(file.release()); }
 
 // Whether the open snapshot has the dataset /fields/NAME.
 bool has_field(hid_t file, const std::string& name) {

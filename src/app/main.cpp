@@ -5,6 +5,7 @@
 
 #include "src/app/commands.hpp"
 #include "src/app/exit_codes.hpp"
+#include "src/io/failed_file.hpp"
 #include "src/parallel/communicator.hpp"
 #include "src/util/build_info.hpp"
 #include "src/util/closest_match.hpp"
@@ -108,7 +109,11 @@ int main(int argc, char** argv) {
     return code == 0 ? success : bad_input;
   }
   deck_args.command_line.assign(argv, argv + argc);
-  if (run->parsed()) return run_command(deck_args);
+  if (run->parsed()) {
+    const int code = run_command(deck_args);
+    if (bagnold::io::a_failed_file_is_open()) bagnold::io::exit_leaving_failed_files_open(code);
+    return code;
+  }
   if (check->parsed()) return check_command(deck_args);
   if (info->parsed()) return info_command();
   if (rheometer->parsed()) return rheometer_command(rheo);

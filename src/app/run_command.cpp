@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <optional>
 
 #include "src/run/progress.hpp"
 #include "src/run/stop_request.hpp"
@@ -19,6 +20,7 @@
 #include "src/app/run_log.hpp"
 #include "src/app/time_loop.hpp"
 #include "src/deck/load.hpp"
+#include "src/io/agree.hpp"
 #include "src/io/monitor.hpp"
 #include "src/run/initial_state.hpp"
 #include "src/run/monitor_columns.hpp"
@@ -132,8 +134,13 @@ int run_command(const DeckArguments& args) {
       }
     }
     record_run(deck, provenance, comm);
-    io::Monitor monitor(output.directory() + "/monitor.csv", monitor_columns(deck, domain),
-                        comm.is_root(), start.snapshot.empty() ? nullptr : &start.time);
+    // Rank 0 alone writes the monitor: every rank learns if it could not (io::agree).
+    std::optional<io::Monitor> opened_monitor;
+    io::agree(comm, [&] {
+      opened_monitor.emplace(output.directory() + "/monitor.csv", monitor_columns(deck, domain),
+                             comm.is_root(), start.snapshot.empty() ? nullptr : &start.time);
+    });
+    io::Monitor& monitor = *opened_monitor;
     solver::PetscSession petsc(nullptr, nullptr);
     solver::PetscSession::add_options(args.petsc_options);
     solver::FlowSolver flow(deck, domain);

@@ -6,7 +6,7 @@
 
 #include "src/app/run_log.hpp"
 #include "src/app/time_step_controller.hpp"
-#include "src/run/agree.hpp"
+#include "src/io/agree.hpp"
 #include "src/run/monitor_columns.hpp"
 #include "src/run/pressure_probe.hpp"
 #include "src/run/stop_request.hpp"
@@ -118,7 +118,7 @@ RunSummary run_time_loop(const TimeLoopContext& context, FlowSolver& flow, run::
     const double courant = flow.courant_number(state, dt_try);
     const auto row = monitor_row(context, flow, state, dt_try, result, courant);  // collective
     // Rank 0 writes the row; all ranks stop together if it cannot (a full disk).
-    run::agree(context.domain.layout.comm(), [&] { context.monitor.append(time, row); });
+    io::agree(context.domain.layout.comm(), [&] { context.monitor.append(time, row); });
     const std::string change = controller.converged(dt_try, result.iterations, courant, step);
     run_log.stepped(time, controller.dt(), change);
     // The snapshot records the next dt, so a restart continues exactly as this run would.

@@ -1,5 +1,6 @@
 #pragma once
-// Move-only owners of HDF5 identifiers: the destructor closes, get() lends the raw id.
+// Move-only owners of HDF5 identifiers: the destructor closes, get() lends the raw id, release()
+// hands it over.
 // Every HDF5 call that can fail goes through check(), which throws with the operation's name.
 
 #include <hdf5.h>
@@ -36,6 +37,8 @@ class Hdf5Handle {
   ~Hdf5Handle() { reset(); }
 
   hid_t get() const { return m_id; }
+  // Gives up ownership without closing: the caller closes the id, or leaves it open on purpose.
+  hid_t release() { return std::exchange(m_id, -1); }
   void reset() {
     if (m_id >= 0) Close(m_id);
     m_id = -1;

@@ -3,8 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <limits>
 
+#include "src/io/agree.hpp"
+#include "src/io/disk_reservation.hpp"
+#include "src/io/failed_file.hpp"
 #include "src/io/hdf5_handle.hpp"
 #include "src/io/snapshot_check.hpp"
 #include "src/util/build_info.hpp"
@@ -15,11 +19,36 @@ namespace {
 
 constexpr int format_version = 1;
 
+// One step of a parallel write, run on every rank and agreed on (agree.hpp) before any rank goes
+// on: a full disk fails the write of whichever rank reaches it (HDF5's metadata is written by
+// rank 0 alone), and a rank that has failed must not be waited for in the next collective call.
+// Each step holds at most one HDF5 call that communicates between the ranks (a collective
+// transfer, a dataset created with its fill written, the flush), and it comes first: a rank
+// whose call failed skips only calls that are its own.
+class Steps {
+ public:
+  explicit Steps(const parallel::Communicator& comm) : m_comm(comm) {}
+  void operator()(const std::function<void()>& step) const { agree(m_comm, step); }
+
+ private:
+  const parallel::Communicator& m_comm;
+};
+
 File open_parallel(const std::string& path, MPI_Comm comm, bool create) {
   // Errors are reported by exceptions with a message; HDF5's own stack dump would only add noise.
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
   PropertyList access(check(H5Pcreate(H5P_FILE_ACCESS), "H5Pcreate(file access)"));
   check_status(H5Pset_fapl_mpio(access.get(), comm, MPI_INFO_NULL), "H5Pset_fapl_mpio");
+  if (create) {
+    // Rank 0 writes all the metadata. With HDF5 1.10's default (the ranks share the metadata
+    // writes), a write that fails makes its rank skip the barrier that ends the flush, and the
+    // others wait there for good; with rank 0 alone, HDF5 reports the failure after the barrier.
+    H5AC_cache_config_t cache;
+    cache.version = H5AC__CURR_CACHE_CONFIG_VERSION;
+    check_status(H5Pget_mdc_config(access.get(), &cache), "H5Pget_mdc_config");
+    cache.metadata_write_strategy = H5AC_METADATA_WRITE_STRATEGY__PROCESS_0_ONLY;
+    check_status(H5Pset_mdc_config(access.get(), &cache), "H5Pset_mdc_config");
+  }
   if (create)
     return File(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.get()));
   return File(H5Fopen(path.c_str(), H5F_ACC_RDONLY, access.get()));
@@ -102,7 +131,10 @@ long read_long_attribute(hid_t object, const char* name) {
   return value;
 }
 
-// A dataset of the given shape; `fill` is what unwritten elements read as.
+// A dataset of the given shape with `fill` as its declared fill value. HDF5 never writes the
+// fill: the writer writes every element itself (rank 0 the elements no rank owns). In parallel
+// HDF5 1.10 a fill written at creation is written by rank 0 alone, followed by a barrier that
+// rank 0 skips when its write fails (a full disk), and the other ranks then wait there for good.
 Dataset create_dataset(hid_t parent, const std::string& name, hid_t type,
                        const std::vector<hsize_t>& dims, const void* fill) {
   Dataspace space(check(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr),
@@ -110,9 +142,8 @@ Dataset create_dataset(hid_t parent, const std::string& name, hid_t type,
   PropertyList create(check(H5Pcreate(H5P_DATASET_CREATE), "H5Pcreate(dataset)"));
   if (fill) {
     check_status(H5Pset_fill_value(create.get(), type, fill), "H5Pset_fill_value");
-    // Parallel HDF5 requires the fill to be written at allocation time.
     check_status(H5Pset_alloc_time(create.get(), H5D_ALLOC_TIME_EARLY), "H5Pset_alloc_time");
-    check_status(H5Pset_fill_time(create.get(), H5D_FILL_TIME_ALLOC), "H5Pset_fill_time");
+    check_status(H5Pset_fill_time(create.get(), H5D_FILL_TIME_NEVER), "H5Pset_fill_time");
   }
   return Dataset(check(H5Dcreate2(parent, name.c_str(), type, space.get(), H5P_DEFAULT,
                                   create.get(), H5P_DEFAULT), ("H5Dcreate " + name).c_str()));
@@ -147,13 +178,17 @@ void transfer_points(hid_t dataset, hid_t type, const std::vector<hsize_t>& coor
 }
 
 // Which owned cells go where: fluid cells to (k, j, i) of the 3-D arrays, boundary cells to
-// their ordinal among all boundary cells in natural order.
+// their ordinal among all boundary cells in natural order. For writing, rank 0 also has the
+// elements no rank owns (the box's cells that are not fluid; the one element of an empty
+// boundary list), which it writes as the fill (create_dataset says why HDF5 does not).
 struct Placement {
   std::vector<int> fluid_locals;
   std::vector<hsize_t> fluid_coordinates;  // 3 per point
   std::vector<int> boundary_locals;
   std::vector<hsize_t> boundary_coordinates;  // 1 per point
   std::vector<std::int64_t> boundary_naturals;  // all boundary cells, natural order
+  std::vector<hsize_t> unowned_coordinates;  // 3 per point
+  std::vector<hsize_t> unowned_boundary;     // 1 per point
 };
 
 std::vector<std::int64_t> all_boundary_naturals(const grid::CellFlags& flags) {
@@ -189,7 +224,24 @@ Placement place_cells(const parallel::Layout& layout, const grid::CellFlags& fla
       add_boundary_point(p, layout.natural(l), l);
     }
   }
+  if (all_local || !layout.comm().is_root()) return p;
+  const auto& g = layout.grid();
+  for (int k = 0; k < g.cells(2); ++k)
+    for (int j = 0; j < g.cells(1); ++j)
+      for (int i = 0; i < g.cells(0); ++i)
+        if (flags.kind[static_cast<std::size_t>(g.natural({i, j, k}))] != grid::CellKind::fluid)
+          p.unowned_coordinates.insert(p.unowned_coordinates.end(),
+                                       {static_cast<hsize_t>(k), static_cast<hsize_t>(j),
+                                        static_cast<hsize_t>(i)});
+  if (p.boundary_naturals.empty()) p.unowned_boundary.push_back(0);
   return p;
+}
+
+// The points a rank writes a dataset at: its own, then (rank 0) those no rank owns, where it
+// writes the fill.
+std::vector<hsize_t> with_unowned(std::vector<hsize_t> coordinates, const std::vector<hsize_t>& unowned) {
+  coordinates.insert(coordinates.end(), unowned.begin(), unowned.end());
+  return coordinates;
 }
 
 std::vector<hsize_t> domain_dims(const grid::StructuredGrid& g) {
@@ -197,22 +249,29 @@ std::vector<hsize_t> domain_dims(const grid::StructuredGrid& g) {
           static_cast<hsize_t>(g.cells(0))};
 }
 
-void write_grid(hid_t file, const parallel::Layout& layout, const grid::CellFlags& flags) {
+void write_grid(hid_t file, const parallel::Layout& layout, const grid::CellFlags& flags,
+                const Steps& step) {
   const auto& g = layout.grid();
-  Group group(check(H5Gcreate2(file, "grid", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), "H5Gcreate grid"));
   const bool root = layout.comm().is_root();
+  Group group;
+  step([&] {
+    group = Group(check(H5Gcreate2(file, "grid", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), "H5Gcreate grid"));
+  });
   const char* names[] = {"x_faces", "y_faces", "z_faces"};
   for (int d = 0; d < 3; ++d) {
     const auto& faces = g.axis(d).faces();
-    Dataset ds = create_dataset(group.get(), names[d], H5T_NATIVE_DOUBLE, {faces.size()}, nullptr);
     // Small datasets: rank 0 writes them whole (independent transfer).
-    if (root)
-      check_status(H5Dwrite(ds.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, faces.data()),
-                   "H5Dwrite faces");
+    step([&] {
+      Dataset ds = create_dataset(group.get(), names[d], H5T_NATIVE_DOUBLE, {faces.size()}, nullptr);
+      if (root)
+        check_status(H5Dwrite(ds.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, faces.data()),
+                     "H5Dwrite faces");
+    });
   }
   const std::uint8_t blocked = 0;
-  Dataset ds = create_dataset(group.get(), "cell_flags", H5T_NATIVE_UINT8, domain_dims(g), &blocked);
-  if (root) {
+  step([&] {
+    Dataset ds = create_dataset(group.get(), "cell_flags", H5T_NATIVE_UINT8, domain_dims(g), &blocked);
+    if (!root) return;
     std::vector<std::uint8_t> domain;
     domain.reserve(static_cast<std::size_t>(g.domain_cell_count()));
     for (int k = 0; k < g.cells(2); ++k)
@@ -222,13 +281,13 @@ void write_grid(hid_t file, const parallel::Layout& layout, const grid::CellFlag
               flags.kind[static_cast<std::size_t>(g.natural({i, j, k}))]));
     check_status(H5Dwrite(ds.get(), H5T_NATIVE_UINT8, H5S_ALL, H5S_ALL, H5P_DEFAULT, domain.data()),
                  "H5Dwrite cell_flags");
-  }
+  });
 }
 
 // The cell vectors, /fields/NAME of shape (nz, ny, nx, 3): this rank's fluid cells, NaN elsewhere,
 // each with its checksum (component fastest in the element index).
 void write_cell_vectors(hid_t field_group, const parallel::Layout& layout, const Placement& placement,
-                        const std::vector<CellVectorView>& vectors) {
+                        const std::vector<CellVectorView>& vectors, const Steps& step) {
   if (vectors.empty()) return;
   auto dims = domain_dims(layout.grid());
   dims.push_back(3);
@@ -236,9 +295,10 @@ void write_cell_vectors(hid_t field_group, const parallel::Layout& layout, const
   const std::size_t points = placement.fluid_locals.size();
   std::vector<hsize_t> coordinates;
   coordinates.reserve(12 * points);
-  for (std::size_t p = 0; p < points; ++p)
+  const auto cells = with_unowned(placement.fluid_coordinates, placement.unowned_coordinates);
+  for (std::size_t p = 0; p < cells.size() / 3; ++p)
     for (hsize_t c = 0; c < 3; ++c) {
-      const hsize_t* at = &placement.fluid_coordinates[3 * p];
+      const hsize_t* at = &cells[3 * p];
       coordinates.insert(coordinates.end(), {at[0], at[1], at[2], c});
     }
   std::vector<std::uint64_t> checksums(vectors.size(), 0);
@@ -256,33 +316,45 @@ void write_cell_vectors(hid_t field_group, const parallel::Layout& layout, const
         buffer.push_back(value);
       }
     }
+    buffer.resize(coordinates.size() / 4, fill);
   }
   MPI_Allreduce(MPI_IN_PLACE, checksums.data(), static_cast<int>(checksums.size()), MPI_UINT64_T,
                 MPI_SUM, layout.comm().get());
   const std::uint64_t base = uniform_checksum(dims[0] * dims[1] * dims[2] * 3, fill);
   for (std::size_t v = 0; v < vectors.size(); ++v) {
-    Dataset ds = create_dataset(field_group, vectors[v].name, H5T_NATIVE_DOUBLE, dims, &fill);
-    write_utf8_attribute(ds.get(), "centering", centering_name(Centering::cell));
-    if (!vectors[v].units.empty()) write_utf8_attribute(ds.get(), "units", vectors[v].units);
-    transfer_points(ds.get(), H5T_NATIVE_DOUBLE, coordinates, 4, buffers[v].data(), true);
-    write_checksum_attribute(ds.get(), base + checksums[v]);
+    Dataset ds;
+    step([&] {
+      ds = create_dataset(field_group, vectors[v].name, H5T_NATIVE_DOUBLE, dims, &fill);
+      write_utf8_attribute(ds.get(), "centering", centering_name(Centering::cell));
+      if (!vectors[v].units.empty()) write_utf8_attribute(ds.get(), "units", vectors[v].units);
+    });
+    step([&] {
+      transfer_points(ds.get(), H5T_NATIVE_DOUBLE, coordinates, 4, buffers[v].data(), true);
+      write_checksum_attribute(ds.get(), base + checksums[v]);
+    });
   }
 }
 
 // The opening faces, /openings: their geometry (rank 0 writes it whole: it is the same on every
 // rank) and each field's values on the faces each rank owns, with a checksum.
-void write_openings(hid_t file, const parallel::Communicator& comm, const OpeningsView& openings) {
+void write_openings(hid_t file, const parallel::Communicator& comm, const OpeningsView& openings,
+                    const Steps& step) {
   const auto& faces = openings.faces;
   if (faces.empty()) return;
-  Group group(check(H5Gcreate2(file, "openings", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
-                    "H5Gcreate openings"));
-  write_utf8_array_attribute(group.get(), "region_names", openings.region_names);
   const hsize_t n = faces.size();
-  Dataset points = create_dataset(group.get(), "points", H5T_NATIVE_DOUBLE, {4 * n, 3}, nullptr);
-  write_utf8_attribute(points.get(), "units", "m");
-  Dataset quads = create_dataset(group.get(), "quads", H5T_NATIVE_INT32, {n, 4}, nullptr);
-  Dataset region = create_dataset(group.get(), "region", H5T_NATIVE_INT32, {n}, nullptr);
-  if (comm.is_root()) {
+  Group group;
+  Dataset points, quads, region;
+  step([&] {
+    group = Group(check(H5Gcreate2(file, "openings", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+                        "H5Gcreate openings"));
+    write_utf8_array_attribute(group.get(), "region_names", openings.region_names);
+    points = create_dataset(group.get(), "points", H5T_NATIVE_DOUBLE, {4 * n, 3}, nullptr);
+    write_utf8_attribute(points.get(), "units", "m");
+    quads = create_dataset(group.get(), "quads", H5T_NATIVE_INT32, {n, 4}, nullptr);
+    region = create_dataset(group.get(), "region", H5T_NATIVE_INT32, {n}, nullptr);
+  });
+  step([&] {
+    if (!comm.is_root()) return;
     std::vector<double> xyz;
     std::vector<std::int32_t> corners, regions;
     for (std::size_t f = 0; f < faces.size(); ++f) {
@@ -296,7 +368,7 @@ void write_openings(hid_t file, const parallel::Communicator& comm, const Openin
                  "H5Dwrite openings/quads");
     check_status(H5Dwrite(region.get(), H5T_NATIVE_INT32, H5S_ALL, H5S_ALL, H5P_DEFAULT, regions.data()),
                  "H5Dwrite openings/region");
-  }
+  });
   const double fill = std::numeric_limits<double>::quiet_NaN();
   std::vector<std::uint64_t> checksums(openings.fields.size(), 0);
   for (std::size_t v = 0; v < openings.fields.size(); ++v) {
@@ -322,13 +394,21 @@ void write_openings(hid_t file, const parallel::Communicator& comm, const Openin
         coordinates.push_back(f);
         if (!scalar) coordinates.push_back(c);
       }
-    Dataset ds = create_dataset(group.get(), field.name, H5T_NATIVE_DOUBLE, dims, &fill);
-    if (!field.units.empty()) write_utf8_attribute(ds.get(), "units", field.units);
-    transfer_points(ds.get(), H5T_NATIVE_DOUBLE, coordinates, scalar ? 1 : 2,
-                    const_cast<double*>(field.values.data()), true);
-    write_checksum_attribute(ds.get(), uniform_checksum(n * width, fill) + checksums[v]);
+    Dataset ds;
+    step([&] {
+      ds = create_dataset(group.get(), field.name, H5T_NATIVE_DOUBLE, dims, &fill);
+      if (!field.units.empty()) write_utf8_attribute(ds.get(), "units", field.units);
+    });
+    step([&] {
+      transfer_points(ds.get(), H5T_NATIVE_DOUBLE, coordinates, scalar ? 1 : 2,
+                      const_cast<double*>(field.values.data()), true);
+      write_checksum_attribute(ds.get(), uniform_checksum(n * width, fill) + checksums[v]);
+    });
   }
 }
+
+// After an agreed failure: the file is left open (failed_file.hpp says why).
+void abandon_after_failed_write(File& file) { leave_failed_file_open(file.release()); }
 
 // Whether the open snapshot has the dataset /fields/NAME.
 bool has_field(hid_t file, const std::string& name) {
@@ -415,42 +495,52 @@ std::uintmax_t snapshot_size_estimate(const parallel::Layout& layout, const grid
 
 void write_snapshot(const std::string& path, const parallel::Layout& layout,
                     const grid::CellFlags& flags, const std::vector<FieldView>& fields,
-                    const SnapshotInfo& info, const ViewingData& viewing) {
+                    const SnapshotInfo& info, const ViewingData& viewing, std::uintmax_t reserve) {
   const std::string temporary = path + ".tmp";
   const auto& comm = layout.comm();
+  const Steps step(comm);
   const Placement placement = place_cells(layout, flags, false);
+  File file;
   try {
-    File file = open_parallel(temporary, comm.get(), true);
-    if (file.get() < 0) throw Hdf5Error("cannot create snapshot file " + temporary);
-    write_attribute(file.get(), "time", info.time);
-    write_attribute(file.get(), "step", info.step);
-    write_attribute(file.get(), "dt", info.dt);
-    write_attribute(file.get(), "dt_next", info.dt_next > 0 ? info.dt_next : info.dt);
-    if (!info.time_step_memory.empty())
-      write_attribute(file.get(), "time_step_memory", info.time_step_memory);
-    write_attribute(file.get(), "format_version", static_cast<long>(format_version));
-    write_utf8_attribute(file.get(), "bagnold_version", version());
-    write_utf8_attribute(file.get(), "title", info.title);
-    for (const auto& r : info.record) {
-      if (const auto* text = std::get_if<std::string>(&r.value))
-        write_utf8_attribute(file.get(), r.name.c_str(), *text);
-      else
-        write_attribute(file.get(), r.name.c_str(), std::get<long>(r.value));
-    }
-    write_grid(file.get(), layout, flags);
+    step([&] {
+      file = open_parallel(temporary, comm.get(), true);
+      if (file.get() < 0) throw Hdf5Error("cannot create snapshot file " + temporary);
+    });
+    step([&] {
+      if (comm.is_root() && reserve > 0) reserve_disk_space(temporary, reserve);
+    });
+    step([&] {
+      write_attribute(file.get(), "time", info.time);
+      write_attribute(file.get(), "step", info.step);
+      write_attribute(file.get(), "dt", info.dt);
+      write_attribute(file.get(), "dt_next", info.dt_next > 0 ? info.dt_next : info.dt);
+      if (!info.time_step_memory.empty())
+        write_attribute(file.get(), "time_step_memory", info.time_step_memory);
+      write_attribute(file.get(), "format_version", static_cast<long>(format_version));
+      write_utf8_attribute(file.get(), "bagnold_version", version());
+      write_utf8_attribute(file.get(), "title", info.title);
+      for (const auto& r : info.record) {
+        if (const auto* text = std::get_if<std::string>(&r.value))
+          write_utf8_attribute(file.get(), r.name.c_str(), *text);
+        else
+          write_attribute(file.get(), r.name.c_str(), std::get<long>(r.value));
+      }
+    });
+    write_grid(file.get(), layout, flags, step);
 
-    Group field_group(check(H5Gcreate2(file.get(), "fields", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
-                            "H5Gcreate fields"));
-    Group boundary_group(check(H5Gcreate2(file.get(), "boundary", H5P_DEFAULT, H5P_DEFAULT,
-                                          H5P_DEFAULT), "H5Gcreate boundary"));
+    Group field_group, boundary_group;
     const hsize_t boundary_total = placement.boundary_naturals.size();
-    {
+    step([&] {
+      field_group = Group(check(H5Gcreate2(file.get(), "fields", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+                                "H5Gcreate fields"));
+      boundary_group = Group(check(H5Gcreate2(file.get(), "boundary", H5P_DEFAULT, H5P_DEFAULT,
+                                              H5P_DEFAULT), "H5Gcreate boundary"));
       Dataset ds = create_dataset(boundary_group.get(), "natural", H5T_NATIVE_INT64,
                                   {std::max<hsize_t>(boundary_total, 1)}, nullptr);
       if (comm.is_root() && boundary_total > 0)
         check_status(H5Dwrite(ds.get(), H5T_NATIVE_INT64, H5S_ALL, H5S_ALL, H5P_DEFAULT,
                               placement.boundary_naturals.data()), "H5Dwrite natural");
-    }
+    });
     const double fill = std::numeric_limits<double>::quiet_NaN();
     // Each dataset's checksum (snapshot_check.hpp): this rank's points, summed over the ranks.
     const auto dims = domain_dims(layout.grid());
@@ -474,38 +564,57 @@ void write_snapshot(const std::string& path, const parallel::Layout& layout,
                   MPI_SUM, comm.get());
     const std::uint64_t fluid_base = uniform_checksum(dims[0] * dims[1] * dims[2], fill);
     const std::uint64_t boundary_base = uniform_checksum(boundary_elements, fill);
+    const auto field_coordinates = with_unowned(placement.fluid_coordinates, placement.unowned_coordinates);
+    const auto boundary_coordinates = with_unowned(placement.boundary_coordinates, placement.unowned_boundary);
     std::vector<double> buffer;
-    std::size_t index = 0;
-    for (const auto& field : fields) {
-      Dataset ds = create_dataset(field_group.get(), field.name, H5T_NATIVE_DOUBLE,
-                                  domain_dims(layout.grid()), &fill);
-      write_utf8_attribute(ds.get(), "centering", centering_name(field.centering));
-      if (!field.units.empty()) write_utf8_attribute(ds.get(), "units", field.units);
-      buffer.clear();
-      for (const int l : placement.fluid_locals) buffer.push_back(field.values[static_cast<std::size_t>(l)]);
-      transfer_points(ds.get(), H5T_NATIVE_DOUBLE, placement.fluid_coordinates, 3, buffer.data(), true);
-      write_checksum_attribute(ds.get(), fluid_base + checksums[2 * index]);
-
-      Dataset bs = create_dataset(boundary_group.get(), field.name, H5T_NATIVE_DOUBLE,
-                                  {std::max<hsize_t>(boundary_total, 1)}, &fill);
-      buffer.clear();
-      for (const int l : placement.boundary_locals) buffer.push_back(field.values[static_cast<std::size_t>(l)]);
-      transfer_points(bs.get(), H5T_NATIVE_DOUBLE, placement.boundary_coordinates, 1, buffer.data(), true);
-      write_checksum_attribute(bs.get(), boundary_base + checksums[2 * index + 1]);
-      ++index;
+    for (std::size_t f = 0; f < fields.size(); ++f) {
+      const auto& field = fields[f];
+      Dataset ds, bs;
+      step([&] {
+        ds = create_dataset(field_group.get(), field.name, H5T_NATIVE_DOUBLE, dims, &fill);
+        write_utf8_attribute(ds.get(), "centering", centering_name(field.centering));
+        if (!field.units.empty()) write_utf8_attribute(ds.get(), "units", field.units);
+      });
+      step([&] {
+        buffer.clear();
+        for (const int l : placement.fluid_locals) buffer.push_back(field.values[static_cast<std::size_t>(l)]);
+        buffer.resize(field_coordinates.size() / 3, fill);
+        transfer_points(ds.get(), H5T_NATIVE_DOUBLE, field_coordinates, 3, buffer.data(), true);
+        write_checksum_attribute(ds.get(), fluid_base + checksums[2 * f]);
+      });
+      step([&] {
+        bs = create_dataset(boundary_group.get(), field.name, H5T_NATIVE_DOUBLE,
+                            {boundary_elements}, &fill);
+      });
+      step([&] {
+        buffer.clear();
+        for (const int l : placement.boundary_locals) buffer.push_back(field.values[static_cast<std::size_t>(l)]);
+        buffer.resize(boundary_coordinates.size(), fill);
+        transfer_points(bs.get(), H5T_NATIVE_DOUBLE, boundary_coordinates, 1, buffer.data(), true);
+        write_checksum_attribute(bs.get(), boundary_base + checksums[2 * f + 1]);
+      });
     }
-    write_cell_vectors(field_group.get(), layout, placement, viewing.cell_vectors);
-    write_openings(file.get(), comm, viewing.openings);
-    check_status(H5Fflush(file.get(), H5F_SCOPE_GLOBAL), "H5Fflush");
+    write_cell_vectors(field_group.get(), layout, placement, viewing.cell_vectors, step);
+    write_openings(file.get(), comm, viewing.openings, step);
+    step([&] { check_status(H5Fflush(file.get(), H5F_SCOPE_GLOBAL), "H5Fflush"); });
+    step([&] {
+      field_group.reset();  // H5Fclose refuses a file with open objects (H5F_CLOSE_SEMI)
+      boundary_group.reset();
+      check_status(H5Fclose(file.release()), "H5Fclose");
+    });
   } catch (const Hdf5Error& e) {
-    // The final name is never touched: earlier snapshots stay as they were.
+    // Every rank is here (each step is agreed on). The final name is never touched: earlier
+    // snapshots stay as they were.
     if (comm.is_root()) std::remove(temporary.c_str());
+    abandon_after_failed_write(file);
     throw Hdf5Error("cannot write the snapshot " + path + " (" + e.what() + "; disk full?)");
   }
-  comm.barrier();
-  if (comm.is_root() && std::rename(temporary.c_str(), path.c_str()) != 0)
-    throw Hdf5Error("cannot rename " + temporary + " to " + path);
-  comm.barrier();
+  agree(comm, [&] {
+    if (!comm.is_root()) return;
+    release_unused_reservation(temporary);
+    if (std::rename(temporary.c_str(), path.c_str()) != 0)
+      throw Hdf5Error("cannot rename " + temporary + " to " + path);
+  });
 }
 
 SnapshotContents read_snapshot(const std::string& path, const parallel::Layout& layout,

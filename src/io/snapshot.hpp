@@ -117,9 +117,14 @@ std::uintmax_t snapshot_size_estimate(const parallel::Layout& layout, const grid
 
 // Collective: every rank calls with the same field names in the same order (and the same
 // viewing data names and opening faces).
+// The file is written as PATH.tmp and renamed when complete; rank 0 first reserves `reserve`
+// bytes on disk for it (disk_reservation.hpp; 0: none). Every step is agreed on by all ranks
+// (agree.hpp): a failure on any rank throws Hdf5Error naming the snapshot on every rank, the
+// .tmp removed. A file whose writes failed is left open (failed_file.hpp).
 void write_snapshot(const std::string& path, const parallel::Layout& layout,
                     const grid::CellFlags& flags, const std::vector<FieldView>& fields,
-                    const SnapshotInfo& info, const ViewingData& viewing = {});
+                    const SnapshotInfo& info, const ViewingData& viewing = {},
+                    std::uintmax_t reserve = 0);
 
 struct SnapshotContents {
   SnapshotInfo info;

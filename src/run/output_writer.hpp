@@ -42,10 +42,10 @@ class OutputWriter {
  private:
   // Collective, before a snapshot is written to `path`: throws io::Hdf5Error on every rank when
   // rank 0 finds less free space on the directory's disk than the snapshot needs (8 KiB more than
-  // the largest written so far, or io::snapshot_size_estimate). A parallel HDF5 (1.10) file whose writes
-  // failed on a full disk cannot be closed, and the program would crash on exit instead of
-  // stopping with this message (docs/reliability.md, "Disk full").
-  void check_room(const std::string& path, const io::SnapshotInfo& info) const;
+  // the largest written so far, or io::snapshot_size_estimate), with a message saying how much.
+  // Returns that size on rank 0 (0 on the others): the writer reserves it on disk before writing
+  // (io/disk_reservation.hpp; docs/reliability.md, "Disk full").
+  std::uintmax_t check_room(const std::string& path, const io::SnapshotInfo& info) const;
   // Rank 0 notes the size of the snapshot just written.
   void note_size(const std::string& path);
 

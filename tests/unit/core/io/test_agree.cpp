@@ -1,11 +1,11 @@
-// run::agree: an action that fails on one rank makes every rank throw, with that rank's message;
+// io::agree: an action that fails on one rank makes every rank throw, with that rank's message;
 // one that fails nowhere returns on all. On 1, 2 and 3 ranks.
 #include <gtest/gtest.h>
 
 #include <stdexcept>
 
 #include "src/io/io_error.hpp"
-#include "src/run/agree.hpp"
+#include "src/io/agree.hpp"
 
 namespace bagnold::tests {
 namespace {
@@ -14,7 +14,7 @@ TEST(Agree, AFailureOnTheLastRankStopsEveryRankWithItsMessage) {
   const parallel::Communicator comm;
   const int last = comm.size() - 1;
   try {
-    run::agree(comm, [&] {
+    io::agree(comm, [&] {
       if (comm.rank() == last) throw std::runtime_error("cannot append to the monitor m.csv (disk full?)");
     });
     FAIL() << "rank " << comm.rank() << " did not throw";
@@ -27,9 +27,9 @@ TEST(Agree, AFailureOnTheLastRankStopsEveryRankWithItsMessage) {
 
 TEST(Agree, TheLowestFailingRanksMessageWinsAndSuccessReturns) {
   const parallel::Communicator comm;
-  EXPECT_NO_THROW(run::agree(comm, [] {}));
+  EXPECT_NO_THROW(io::agree(comm, [] {}));
   try {
-    run::agree(comm, [&] { throw std::runtime_error("rank " + std::to_string(comm.rank())); });
+    io::agree(comm, [&] { throw std::runtime_error("rank " + std::to_string(comm.rank())); });
     FAIL();
   } catch (const io::Hdf5Error& e) {
     EXPECT_STREQ(e.what(), "rank 0");

@@ -1,17 +1,17 @@
-#include "src/run/agree.hpp"
+#include "src/io/agree.hpp"
 
 #include <exception>
 #include <string>
 
 #include "src/io/io_error.hpp"
 
-namespace bagnold::run {
+namespace bagnold::io {
 
 void agree(const parallel::Communicator& comm, const std::function<void()>& action) {
   std::string problem;
   try {
     action();
-  } catch (const std::exception& e) {  // io::Hdf5Error, or the file system's
+  } catch (const std::exception& e) {  // Hdf5Error, or the file system's
     problem = e.what();
     if (problem.empty()) problem = "a file-system operation failed";
   }
@@ -21,7 +21,7 @@ void agree(const parallel::Communicator& comm, const std::function<void()>& acti
   MPI_Allreduce(&mine, &failed, 1, MPI_INT, MPI_MIN, comm.get());
   if (failed == comm.size()) return;
   comm.broadcast(problem, failed);
-  throw io::Hdf5Error(problem);
+  throw Hdf5Error(problem);
 }
 
-}  // namespace bagnold::run
+}  // namespace bagnold::io

@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <array>
-#include <functional>
 
 namespace bagnold::run {
 
@@ -23,8 +22,8 @@ RankCounters unpack(const double* v) {
 }
 
 // max/min of one counter over the ranks, as text: "inf" when the smallest is 0 and the largest not.
-std::string ratio(const std::vector<RankCounters>& ranks,
-                  const std::function<double(const RankCounters&)>& value) {
+template <class Value>
+std::string ratio(const std::vector<RankCounters>& ranks, Value value) {
   double smallest = value(ranks.front()), largest = smallest;
   for (const auto& r : ranks) {
     smallest = std::min(smallest, value(r));
@@ -35,12 +34,12 @@ std::string ratio(const std::vector<RankCounters>& ranks,
   return fmt::format("{:.2f}", largest / smallest);
 }
 
-const std::function<double(const RankCounters&)> owned = [](const RankCounters& r) { return r.owned_cells; };
-const std::function<double(const RankCounters&)> fluid = [](const RankCounters& r) { return r.fluid_cells; };
-const std::function<double(const RankCounters&)> solids = [](const RankCounters& r) { return r.solids_cells; };
-const std::function<double(const RankCounters&)> assembly = [](const RankCounters& r) { return r.seconds.assembly; };
-const std::function<double(const RankCounters&)> solves = [](const RankCounters& r) { return r.seconds.solves; };
-const std::function<double(const RankCounters&)> waits = [](const RankCounters& r) { return r.seconds.waits; };
+double owned(const RankCounters& r) { return r.owned_cells; }
+double fluid(const RankCounters& r) { return r.fluid_cells; }
+double solids(const RankCounters& r) { return r.solids_cells; }
+double assembly(const RankCounters& r) { return r.seconds.assembly; }
+double solves(const RankCounters& r) { return r.seconds.solves; }
+double waits(const RankCounters& r) { return r.seconds.waits; }
 
 }  // namespace
 

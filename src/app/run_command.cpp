@@ -102,8 +102,9 @@ int run_command(const DeckArguments& args) {
           true);
       return bad_input;
     }
-    // The state on the partition by fluid cells; with numerics.partition_weights = "work", the
-    // partition weighted by that state's work (work_weights.hpp), and the state again on it.
+    // The state on the partition by fluid cells; with numerics.partition_weights = "work" on more
+    // than one rank, the partition weighted by that state's work (work_weights.hpp), and the
+    // state again on it.
     run::FlowState state(0);
     StartPoint start;
     for (bool weighted = false;; weighted = true) {
@@ -118,7 +119,7 @@ int run_command(const DeckArguments& args) {
           return bad_input;
         }
       }
-      if (weighted || deck.numerics.partition_weights != "work") break;
+      if (weighted || deck.numerics.partition_weights != "work" || comm.size() == 1) break;
       const auto weights = run::work_weights(*prepared.domain, state, solver::solids_threshold);
       prepared.domain = std::make_unique<parallel::Domain>(deck, comm, weights);
       say(run::work_partition_text(*prepared.domain, weights));

@@ -1,4 +1,4 @@
-// This rank's seconds in the outer iteration's phases and linear solves (work_clock.hpp).
+// This rank's seconds in time steps, linear solves and MPI waits (work_clock.hpp).
 #include "solver/petsc/work_clock.hpp"
 
 #include <mpi.h>
@@ -22,7 +22,7 @@ ScopedWorkClock::~ScopedWorkClock() {
     totals.solves += elapsed;
     return;
   }
-  totals.stages += elapsed;  // stages do not nest: their waits are counted once
+  totals.steps += elapsed;
   totals.waits += parallel::mpi_wait_seconds() - m_wait_start;
 }
 

@@ -176,8 +176,9 @@ int run_command(const DeckArguments& args) {
     say(fmt::format("bagnold run: t = {:.6g} s after {} steps ({} redone), {:.2f} outer iterations "
                     "per step, {:.1f} s wall",
                     result.time, result.steps, result.redone_steps, per_step, wall));
-    say("bagnold run: per rank, over the run (wait: in MPI, during assembly and solves)\n" +
-        run::rank_balance_table(run::gather_rank_counters(comm, rank_counters(domain, state))));
+    if (comm.size() > 1)
+      say("bagnold run: per rank, over the run (wait: in MPI, during assembly and solves)\n" +
+          run::rank_balance_table(run::gather_rank_counters(comm, rank_counters(domain, state))));
     if (result.interrupted) {
       say("bagnold run: interrupted; continue with --restart " + output.directory(), true);
       return interrupted;

@@ -18,7 +18,7 @@ namespace bagnold::app {
 run::RankCounters rank_counters(const parallel::Domain& domain, const run::FlowState& state) {
   const auto work = solver::work_seconds();
   return run::count_rank(domain.layout, state, solver::solids_threshold,
-                         {work.stages - work.solves, work.solves, work.waits});
+                         {work.steps - work.solves, work.solves, work.waits});
 }
 
 std::vector<std::string> monitor_columns(const deck::Deck& deck, const parallel::Domain& domain) {
@@ -135,9 +135,11 @@ RunSummary run_time_loop(const TimeLoopContext& context, FlowSolver& flow, run::
     if (context.output.snapshot_due(time) || stop || finished) {
       run_log.snapshot(time, context.output.write(state, time, step, dt_try, controller.dt(),
                                                   controller.memory()));
-      const auto ranks = run::gather_rank_counters(context.domain.layout.comm(),
-                                                   rank_counters(context.domain, state));
-      context.log(fmt::format("t = {:.6g} s: {}", time, run::rank_balance_line(ranks)));
+      const auto& comm = context.domain.layout.comm();
+      if (comm.size() > 1)
+        context.log(fmt::format("t = {:.6g} s: {}", time,
+                                run::rank_balance_line(run::gather_rank_counters(
+                                    comm, rank_counters(context.domain, state)))));
     }
     context.progress.update(time, dt_try, result.iterations);
     if (stop) {

@@ -9,7 +9,8 @@
 // Only the last step is shortened, to land on end_time; a snapshot is written at the end of the
 // first step that reaches its scheduled time, and the state at end_time is always written.
 // Every redone step is logged; each snapshot and the dt changes before it as run_log.hpp says,
-// then the balance of the ranks since the run started (src/run/rank_balance.hpp).
+// then, on more than one rank, the balance of the ranks since the run started
+// (src/run/rank_balance.hpp).
 // A step that fails at run.dt_min stops the run.
 
 #include <functional>
@@ -56,7 +57,8 @@ RunSummary run_time_loop(const TimeLoopContext& context, FlowSolver& flow, run::
                          const std::vector<double>& time_step_memory = {});
 
 // This rank's counters now: its cells, its cells holding solids (ε_s above the solver's
-// solids_threshold) and its seconds in the outer iteration since the process started.
+// solids_threshold) and its seconds in time steps since the process started
+// (solver/petsc/work_clock.hpp).
 run::RankCounters rank_counters(const parallel::Domain& domain, const run::FlowState& state);
 
 // The monitor's columns: run::monitor_columns, then a count per numerical limiter and the linear

@@ -1,8 +1,8 @@
 #pragma once
 // How the work of a run is spread over the ranks, for the user: per rank the cells it owns, its
 // owned fluid cells, the owned fluid cells holding solids (ε_s above a threshold), and its wall
-// seconds in assembly (the outer iteration's phases outside linear solves), in linear solves,
-// and waiting for other ranks in MPI during the outer iteration (part of the other two). The
+// seconds in assembly (the time steps' outer iterations outside linear solves), in linear
+// solves, and waiting for other ranks in MPI during the time steps (part of the other two). The
 // counts are this rank's alone; gather_rank_counters is the one collective (an all-gather of a
 // few numbers), made only when the balance is shown.
 

@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <utility>
 
+#include "solver/petsc/work_clock.hpp"
+
 namespace bagnold::solver {
 
 PetscSession::PetscSession(int* argc, char*** argv) {
@@ -122,7 +124,10 @@ SolveReport LinearSystem::solve(std::vector<double>& x) {
   petsc_check(VecGetArray(m_solution.get(), &values), "VecGetArray");
   std::copy(x.begin(), x.begin() + m_rows, values);
   petsc_check(VecRestoreArray(m_solution.get(), &values), "VecRestoreArray");
-  petsc_check(KSPSolve(m_ksp.get(), m_rhs.get(), m_solution.get()), "KSPSolve");
+  {
+    const ScopedWorkClock clock(ScopedWorkClock::solve);
+    petsc_check(KSPSolve(m_ksp.get(), m_rhs.get(), m_solution.get()), "KSPSolve");
+  }
   SolveReport report;
   PetscInt iterations = 0;
   KSPConvergedReason reason;

@@ -7,6 +7,7 @@
 #include <cstdlib>
 
 #include "solver/petsc/log_stage.hpp"
+#include "solver/petsc/work_clock.hpp"
 #include "solver/simple/face_fractions.hpp"
 #include "solver/simple/flow_solver.hpp"
 #include "solver/simple/solids_conservation.hpp"
@@ -50,6 +51,7 @@ bool FlowSolver::iterate(run::FlowState& state, const run::FlowState& old, doubl
 
 StepResult FlowSolver::advance(run::FlowState& state, const run::FlowState& old, double dt,
                                bool (*stop_probe)()) {
+  const ScopedWorkClock clock(ScopedWorkClock::step);  // this rank's balance (work_clock.hpp)
   StepResult result;
   apply_boundary_values(state);
   // BAGNOLD_TRACE=1: every outer iteration's residuals and the cell of the largest, on stderr.

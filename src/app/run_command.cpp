@@ -28,6 +28,8 @@
 #include "src/run/provenance.hpp"
 #include "src/run/restart_snapshot.hpp"
 #include "src/run/run_directory.hpp"
+#include "src/run/work_weights.hpp"
+#include "solver/simple/face_fractions.hpp"
 
 namespace bagnold::app {
 
@@ -92,7 +94,7 @@ int run_command(const DeckArguments& args) {
   const auto claim = claim_output_directory(args, snapshot, deck, comm);
   if (claim.code != success) return claim.code;
   try {
-    const auto prepared = preflight(deck, comm);
+    auto prepared = preflight(deck, comm);
     const auto provenance =
         run::describe_run(args.command_line, comm.size(), args.petsc_options, snapshot);
     say("bagnold run: " + args.deck + "\n" + prepared.text +
@@ -102,17 +104,30 @@ int run_command(const DeckArguments& args) {
           true);
       return bad_input;
     }
-    const parallel::Domain& domain = *prepared.domain;
-    run::FlowState state(domain.layout.local_count());
-    run::set_initial_state(deck, domain, state);
-    StartPoint start{0.0, 0, deck.run.dt_initial, "", {}};
-    if (!snapshot.empty()) {
-      try {
-        start = restore_state(snapshot, domain, state);
-      } catch (const io::Hdf5Error& e) {
-        say(std::string("bagnold run: cannot restart: ") + e.what(), true);
-        return bad_input;
+    // The state on the partition by fluid cells; with numerics.partition_weights = "work" on more
+    // than one rank, the partition weighted by that state's work (work_weights.hpp), and the
+    // state again on it.
+    run::FlowState state(0);
+    StartPoint start;
+    for (bool weighted = false;; weighted = true) {
+      state = run::FlowState(prepared.domain->layout.local_count());
+      run::set_initial_state(deck, *prepared.domain, state);
+      start = StartPoint{0.0, 0, deck.run.dt_initial, "", {}};
+      if (!snapshot.empty()) {
+        try {
+          start = restore_state(snapshot, *prepared.domain, state);
+        } catch (const io::Hdf5Error& e) {
+          say(std::string("bagnold run: cannot restart: ") + e.what(), true);
+          return bad_input;
+        }
       }
+      if (weighted || deck.numerics.partition_weights != "work" || comm.size() == 1) break;
+      const auto weights = run::work_weights(*prepared.domain, state, solver::solids_threshold);
+      prepared.domain = std::make_unique<parallel::Domain>(deck, comm, weights);
+      say(run::work_partition_text(*prepared.domain, weights));
+    }
+    const parallel::Domain& domain = *prepared.domain;
+    if (!snapshot.empty()) {
       // The snapshot's next dt, kept within the deck's limits: a restart with a new dt_max or
       // dt_min obeys them from its first step.
       const double snapshot_dt = start.dt;
@@ -168,6 +183,9 @@ int run_command(const DeckArguments& args) {
     say(fmt::format("bagnold run: t = {:.6g} s after {} steps ({} redone), {:.2f} outer iterations "
                     "per step, {:.1f} s wall",
                     result.time, result.steps, result.redone_steps, per_step, wall));
+    if (comm.size() > 1)
+      say("bagnold run: per rank, over the run (wait: in MPI, during assembly and solves)\n" +
+          run::rank_balance_table(run::gather_rank_counters(comm, rank_counters(domain, state))));
     if (result.interrupted) {
       say("bagnold run: interrupted; continue with --restart " + output.directory(), true);
       return interrupted;

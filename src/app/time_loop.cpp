@@ -6,12 +6,20 @@
 
 #include "src/app/run_log.hpp"
 #include "src/app/time_step_controller.hpp"
+#include "solver/petsc/work_clock.hpp"
+#include "solver/simple/face_fractions.hpp"
 #include "src/io/agree.hpp"
 #include "src/run/monitor_columns.hpp"
 #include "src/run/pressure_probe.hpp"
 #include "src/run/stop_request.hpp"
 
 namespace bagnold::app {
+
+run::RankCounters rank_counters(const parallel::Domain& domain, const run::FlowState& state) {
+  const auto work = solver::work_seconds();
+  return run::count_rank(domain.layout, state, solver::solids_threshold,
+                         {work.steps - work.solves, work.solves, work.waits});
+}
 
 std::vector<std::string> monitor_columns(const deck::Deck& deck, const parallel::Domain& domain) {
   auto columns = run::monitor_columns(domain.regions, deck.pressure_probes);
@@ -124,9 +132,15 @@ RunSummary run_time_loop(const TimeLoopContext& context, FlowSolver& flow, run::
     // The snapshot records the next dt, so a restart continues exactly as this run would.
     const bool stop = run::stop_requested(context.domain.layout.comm());
     const bool finished = time >= end - tiny;  // the final state is always written
-    if (context.output.snapshot_due(time) || stop || finished)
+    if (context.output.snapshot_due(time) || stop || finished) {
       run_log.snapshot(time, context.output.write(state, time, step, dt_try, controller.dt(),
                                                   controller.memory()));
+      const auto& comm = context.domain.layout.comm();
+      if (comm.size() > 1)
+        context.log(fmt::format("t = {:.6g} s: {}", time,
+                                run::rank_balance_line(run::gather_rank_counters(
+                                    comm, rank_counters(context.domain, state)))));
+    }
     context.progress.update(time, dt_try, result.iterations);
     if (stop) {
       summary.interrupted = true;

@@ -8,7 +8,9 @@
 // recorded cost per simulated second and the Courant limit.
 // Only the last step is shortened, to land on end_time; a snapshot is written at the end of the
 // first step that reaches its scheduled time, and the state at end_time is always written.
-// Every redone step is logged; each snapshot and the dt changes before it as run_log.hpp says.
+// Every redone step is logged; each snapshot and the dt changes before it as run_log.hpp says,
+// then, on more than one rank, the balance of the ranks since the run started
+// (src/run/rank_balance.hpp).
 // A step that fails at run.dt_min stops the run.
 
 #include <functional>
@@ -18,6 +20,7 @@
 #include "src/io/monitor.hpp"
 #include "src/run/output_writer.hpp"
 #include "src/run/progress.hpp"
+#include "src/run/rank_balance.hpp"
 
 namespace bagnold::app {
 
@@ -52,6 +55,11 @@ struct TimeLoopContext {
 RunSummary run_time_loop(const TimeLoopContext& context, FlowSolver& flow, run::FlowState& state,
                          double start_time, long start_step, double dt_start,
                          const std::vector<double>& time_step_memory = {});
+
+// This rank's counters now: its cells, its cells holding solids (ε_s above the solver's
+// solids_threshold) and its seconds in time steps since the process started
+// (solver/petsc/work_clock.hpp).
+run::RankCounters rank_counters(const parallel::Domain& domain, const run::FlowState& state);
 
 // The monitor's columns: run::monitor_columns, then a count per numerical limiter and the linear
 // iterations per kind of system, each summed over the step's outer iterations, then the step's

@@ -153,6 +153,7 @@ struct Numerics {
   std::string pressure_preconditioner = "hypre";  // hypre | gamg
   double pressure_tolerance = 1e-4;      // relative, per outer iteration
   double momentum_tolerance = 1e-4;      // relative, per outer iteration
+  std::string partition_weights = "cells";  // cells | work
 };
 
 struct Output {

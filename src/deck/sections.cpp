@@ -364,6 +364,10 @@ const Section<Numerics>& numerics_section() {
           .within(1e-14, 0.5).doc("Relative tolerance of the pressure-correction solve."),
       key(&Numerics::momentum_tolerance, "momentum_tolerance").unit("-").init()
           .within(1e-14, 0.5).doc("Relative tolerance of the momentum solves."),
+      key(&Numerics::partition_weights, "partition_weights").init().one_of({"cells", "work"})
+          .doc("What the partition over ranks balances: fluid cells, or work (a fluid cell "
+               "holding solids weighs as much as it costs against a gas-only one, from the "
+               "initial state or the restart snapshot's)."),
   }};
   return s;
 }

@@ -4,11 +4,13 @@
 
 namespace bagnold::parallel {
 
-Domain::Domain(const deck::Deck& deck, const Communicator& comm)
+Domain::Domain(const deck::Deck& deck, const Communicator& comm) : Domain(deck, comm, {}) {}
+
+Domain::Domain(const deck::Deck& deck, const Communicator& comm, const std::vector<int>& weights)
     : grid(deck.grid),
       regions(grid::make_boundary_regions(deck)),
       flags(grid::classify_cells(grid, deck.geometry, regions)),
-      owner(partition_cells(grid, flags, comm.size())),
+      owner(partition_cells(grid, flags, comm.size(), weights)),
       layout(grid, flags, owner, comm) {}
 
 }  // namespace bagnold::parallel

@@ -1,6 +1,7 @@
 #pragma once
 // Everything a run builds from the deck before any field exists: the grid, the cell flags, the
-// boundary regions, the partition and this rank's layout. Collective over the communicator.
+// boundary regions, the partition (by fluid cells, or by given weights) and this rank's layout.
+// Collective over the communicator.
 
 #include <vector>
 
@@ -13,6 +14,8 @@ namespace bagnold::parallel {
 
 struct Domain {
   Domain(const deck::Deck& deck, const Communicator& comm);
+  // Partitioned by these weights of the fluid cells (partition.hpp).
+  Domain(const deck::Deck& deck, const Communicator& comm, const std::vector<int>& weights);
   Domain(const Domain&) = delete;  // the layout points at the grid
   Domain& operator=(const Domain&) = delete;
 

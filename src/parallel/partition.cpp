@@ -17,7 +17,8 @@ const Index3 face_offsets[6] = {{-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0
 // METIS k-way on the fluid-cell graph; returns the part of each fluid cell in natural order.
 std::vector<idx_t> metis_parts(const grid::StructuredGrid& grid, const grid::CellFlags& flags,
                                const std::vector<std::int64_t>& fluid_cells,
-                               const std::vector<idx_t>& vertex_of, int parts) {
+                               const std::vector<idx_t>& vertex_of, int parts,
+                               const std::vector<int>& weights) {
   std::vector<idx_t> xadj{0}, adjncy;
   xadj.reserve(fluid_cells.size() + 1);
   adjncy.reserve(6 * fluid_cells.size());
@@ -45,8 +46,13 @@ std::vector<idx_t> metis_parts(const grid::StructuredGrid& grid, const grid::Cel
   METIS_SetDefaultOptions(options);
   options[METIS_OPTION_SEED] = 1;  // the same partition on every rank and every run
   std::vector<idx_t> part(fluid_cells.size(), 0);
+  std::vector<idx_t> vertex_weights;
+  if (!weights.empty())
+    for (const auto c : fluid_cells)
+      vertex_weights.push_back(static_cast<idx_t>(weights[static_cast<std::size_t>(c)]));
   const int status = METIS_PartGraphKway(&vertices, &constraints, xadj.data(), adjncy.data(),
-                                         nullptr, nullptr, nullptr, &nparts, nullptr, nullptr,
+                                         vertex_weights.empty() ? nullptr : vertex_weights.data(),
+                                         nullptr, nullptr, &nparts, nullptr, nullptr,
                                          options, &cut, part.data());
   if (status != METIS_OK)
     throw std::runtime_error("METIS_PartGraphKway failed with status " + std::to_string(status));
@@ -55,7 +61,7 @@ std::vector<idx_t> metis_parts(const grid::StructuredGrid& grid, const grid::Cel
 }  // namespace
 
 std::vector<int> partition_cells(const grid::StructuredGrid& grid, const grid::CellFlags& flags,
-                                 int parts) {
+                                 int parts, const std::vector<int>& weights) {
   const auto n = static_cast<std::size_t>(grid.extended_cell_count());
   std::vector<int> owner(n, -1);
   std::vector<std::int64_t> fluid_cells;
@@ -71,7 +77,7 @@ std::vector<int> partition_cells(const grid::StructuredGrid& grid, const grid::C
     throw grid::GeometryError("more ranks (" + std::to_string(parts) + ") than fluid cells (" +
                              std::to_string(fluid_cells.size()) + ")");
   if (parts > 1) {
-    const auto part = metis_parts(grid, flags, fluid_cells, vertex_of, parts);
+    const auto part = metis_parts(grid, flags, fluid_cells, vertex_of, parts, weights);
     for (std::size_t v = 0; v < fluid_cells.size(); ++v)
       owner[static_cast<std::size_t>(fluid_cells[v])] = static_cast<int>(part[v]);
   } else {

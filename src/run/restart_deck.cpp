@@ -5,7 +5,8 @@
 namespace bagnold::run {
 
 bool is_run_control(const std::string& key) {
-  return key.starts_with("run.") || key.starts_with("output.");
+  return key.starts_with("run.") || key.starts_with("output.") ||
+         key == "numerics.partition_weights";
 }
 
 std::vector<deck::KeyDifference> restart_conflicts(const std::string& recorded_deck,

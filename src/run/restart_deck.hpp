@@ -3,7 +3,8 @@
 // resolved deck must be the one the snapshot was written with (the snapshot's `deck` attribute,
 // run/provenance.hpp), except for run control, which a continuation may change: the [run] table
 // (title, end_time, dt_initial, dt_min, dt_max) and the [output] table (directory,
-// snapshot_interval, progress, progress_interval). Everything else (physics, grid, geometry, boundaries,
+// snapshot_interval, progress, progress_interval), and numerics.partition_weights (a restart
+// partitions anew; the answer is the same to the solver's tolerance). Everything else (physics, grid, geometry, boundaries,
 // materials, models, initial state, numerics) must match unless the user says --force.
 
 #include <string>

@@ -15,9 +15,10 @@ std::vector<deck::KeyDifference> conflicts_with(const std::vector<std::string>& 
   return run::restart_conflicts(recorded(), deck::load_deck_text(deck_text(), "deck.toml", overrides));
 }
 
-TEST(RestartDeck, RunControlIsTheRunAndOutputTables) {
+TEST(RestartDeck, RunControlIsTheRunAndOutputTablesAndThePartition) {
   for (const auto* key : {"run.end_time", "run.dt_max", "run.dt_min", "run.dt_initial", "run.title",
-                          "output.directory", "output.snapshot_interval", "output.progress"})
+                          "output.directory", "output.snapshot_interval", "output.progress",
+                          "numerics.partition_weights"})
     EXPECT_TRUE(run::is_run_control(key)) << key;
   for (const auto* key : {"solids.diameter", "numerics.tolerance", "numerics.max_outer_iterations",
                           "grid.x.cells", "boundary[0].pressure", "initial[0].solids_fraction",

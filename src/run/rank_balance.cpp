@@ -1,0 +1,103 @@
+// Per-rank counters of cells and seconds, gathered and shown (rank_balance.hpp).
+#include "src/run/rank_balance.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+
+namespace bagnold::run {
+
+namespace {
+
+constexpr int counter_count = 6;
+
+std::array<double, counter_count> pack(const RankCounters& c) {
+  return {c.owned_cells, c.fluid_cells, c.solids_cells, c.seconds.assembly, c.seconds.solves,
+          c.seconds.waits};
+}
+
+RankCounters unpack(const double* v) {
+  return {v[0], v[1], v[2], RankSeconds{v[3], v[4], v[5]}};
+}
+
+// max/min of one counter over the ranks, as text: "inf" when the smallest is 0 and the largest not.
+template <class Value>
+std::string ratio(const std::vector<RankCounters>& ranks, Value value) {
+  double smallest = value(ranks.front()), largest = smallest;
+  for (const auto& r : ranks) {
+    smallest = std::min(smallest, value(r));
+    largest = std::max(largest, value(r));
+  }
+  if (largest == 0.0) return "1.00";
+  if (smallest == 0.0) return "inf";
+  return fmt::format("{:.2f}", largest / smallest);
+}
+
+double owned(const RankCounters& r) { return r.owned_cells; }
+double fluid(const RankCounters& r) { return r.fluid_cells; }
+double solids(const RankCounters& r) { return r.solids_cells; }
+double assembly(const RankCounters& r) { return r.seconds.assembly; }
+double solves(const RankCounters& r) { return r.seconds.solves; }
+double waits(const RankCounters& r) { return r.seconds.waits; }
+
+}  // namespace
+
+double RankCounters::wait_share() const {
+  const double busy = seconds.assembly + seconds.solves;
+  return busy > 0.0 ? seconds.waits / busy : 0.0;
+}
+
+RankCounters count_rank(const parallel::Layout& layout, const FlowState& state,
+                        double solids_threshold, const RankSeconds& seconds) {
+  RankCounters c;
+  c.owned_cells = layout.owned_count();
+  c.fluid_cells = layout.owned_fluid_count();
+  for (int l = 0; l < layout.owned_fluid_count(); ++l)
+    if (state.solids_fraction[static_cast<std::size_t>(l)] > solids_threshold) c.solids_cells += 1.0;
+  c.seconds = seconds;
+  return c;
+}
+
+std::vector<RankCounters> gather_rank_counters(const parallel::Communicator& comm,
+                                               const RankCounters& mine) {
+  const auto packed = pack(mine);
+  std::vector<double> all(static_cast<std::size_t>(comm.size()) * counter_count);
+  MPI_Allgather(packed.data(), counter_count, MPI_DOUBLE, all.data(), counter_count, MPI_DOUBLE,
+                comm.get());
+  std::vector<RankCounters> ranks;
+  for (int r = 0; r < comm.size(); ++r)
+    ranks.push_back(unpack(all.data() + static_cast<std::size_t>(r) * counter_count));
+  return ranks;
+}
+
+std::string rank_balance_table(const std::vector<RankCounters>& ranks) {
+  std::string text = fmt::format("{:>8} {:>10} {:>10} {:>10} {:>12} {:>10} {:>10} {:>6}\n", "rank",
+                                 "cells", "fluid", "solids", "assembly/s", "solves/s", "wait/s",
+                                 "wait%");
+  for (std::size_t r = 0; r < ranks.size(); ++r) {
+    const auto& c = ranks[r];
+    text += fmt::format("{:>8} {:>10.0f} {:>10.0f} {:>10.0f} {:>12.2f} {:>10.2f} {:>10.2f} {:>6.1f}\n",
+                        r, c.owned_cells, c.fluid_cells, c.solids_cells, c.seconds.assembly,
+                        c.seconds.solves, c.seconds.waits, 100.0 * c.wait_share());
+  }
+  text += fmt::format("{:>8} {:>10} {:>10} {:>10} {:>12} {:>10} {:>10}\n", "max/min",
+                      ratio(ranks, owned), ratio(ranks, fluid), ratio(ranks, solids),
+                      ratio(ranks, assembly), ratio(ranks, solves), ratio(ranks, waits));
+  text.pop_back();  // the caller ends the line
+  return text;
+}
+
+std::string rank_balance_line(const std::vector<RankCounters>& ranks) {
+  double least = 1.0, most = 0.0;
+  for (const auto& r : ranks) {
+    least = std::min(least, r.wait_share());
+    most = std::max(most, r.wait_share());
+  }
+  return fmt::format("ranks: fluid cells max/min {}, solids cells {}, assembly {}, solves {}; "
+                     "wait {:.1f}–{:.1f} %",
+                     ratio(ranks, fluid), ratio(ranks, solids), ratio(ranks, assembly),
+                     ratio(ranks, solves), 100.0 * least, 100.0 * most);
+}
+
+}  // namespace bagnold::run

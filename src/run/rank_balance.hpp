@@ -1,0 +1,49 @@
+#pragma once
+// How the work of a run is spread over the ranks, for the user: per rank the cells it owns, its
+// owned fluid cells, the owned fluid cells holding solids (ε_s above a threshold), and its wall
+// seconds in assembly (the time steps' outer iterations outside linear solves), in linear
+// solves, and waiting for other ranks in MPI during the time steps (part of the other two). The
+// counts are this rank's alone; gather_rank_counters is the one collective (an all-gather of a
+// few numbers), made only when the balance is shown.
+
+#include <string>
+#include <vector>
+
+#include "src/parallel/layout.hpp"
+#include "src/run/flow_state.hpp"
+
+namespace bagnold::run {
+
+struct RankSeconds {
+  double assembly = 0.0;
+  double solves = 0.0;
+  double waits = 0.0;
+};
+
+struct RankCounters {
+  double owned_cells = 0.0;   // fluid and boundary
+  double fluid_cells = 0.0;
+  double solids_cells = 0.0;  // owned fluid cells with ε_s > the threshold
+  RankSeconds seconds;
+
+  // waits / (assembly + solves); 0 before any work.
+  double wait_share() const;
+};
+
+// This rank's counters: its owned cells in `layout`, its cells with ε_s > `solids_threshold` in
+// `state`, and `seconds` as given.
+RankCounters count_rank(const parallel::Layout& layout, const FlowState& state,
+                        double solids_threshold, const RankSeconds& seconds);
+// Every rank's, in rank order, on every rank. Collective.
+std::vector<RankCounters> gather_rank_counters(const parallel::Communicator& comm,
+                                               const RankCounters& mine);
+
+// The table printed at the end of a run: a row per rank, then the max/min ratio of each column
+// ("inf" when the smallest is 0).
+std::string rank_balance_table(const std::vector<RankCounters>& ranks);
+// One line for the run log: the max/min ratios of fluid cells, solids cells, assembly and solve
+// seconds, and the range of the ranks' wait shares ("ranks: fluid cells max/min 1.00, solids
+// cells 2.31, assembly 1.85, solves 1.10; wait 2.1–22.5 %").
+std::string rank_balance_line(const std::vector<RankCounters>& ranks);
+
+}  // namespace bagnold::run

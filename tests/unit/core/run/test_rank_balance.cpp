@@ -1,0 +1,69 @@
+// The per-rank counters (src/run/rank_balance.hpp) on a box 4 x 4 x 6 with solids in its lower
+// half: the ranks' owned fluid cells sum to the box's 96, their solids cells to the 48 below
+// z = 0.03, each rank counting exactly its own cells there; gathered in rank order on every rank.
+// Run on 1, 2 and 3 ranks.
+#include <gtest/gtest.h>
+
+#include "src/run/initial_state.hpp"
+#include "src/run/rank_balance.hpp"
+#include "tests/support/deck_domain.hpp"
+#include "tests/support/test_decks.hpp"
+
+namespace bagnold::tests {
+namespace {
+
+struct HalfFilledBox : DeckAndDomain {
+  run::FlowState state;
+  HalfFilledBox()
+      : DeckAndDomain(box_deck(4, 4, 6, "[[initial]]\nmax = [1.0, 1.0, 0.03]\nsolids_fraction = 0.4\n")),
+        state(domain.layout.local_count()) {
+    run::set_initial_state(deck, domain, state);
+  }
+};
+
+TEST(RankBalance, CountsEachRanksOwnCells) {
+  const HalfFilledBox box;
+  const auto& layout = box.domain.layout;
+  const auto mine = run::count_rank(layout, box.state, 1e-6, {1.0, 2.0, 0.5});
+  int below = 0;
+  for (int l = 0; l < layout.owned_fluid_count(); ++l)
+    if (box.domain.grid.centre(layout.index3(l))[2] < 0.03) ++below;
+  EXPECT_EQ(mine.fluid_cells, layout.owned_fluid_count());
+  EXPECT_EQ(mine.owned_cells, layout.owned_count());
+  EXPECT_EQ(mine.solids_cells, below) << "solids cells are the owned cells below the fill";
+  EXPECT_DOUBLE_EQ(mine.wait_share(), 0.5 / 3.0);
+
+  const auto ranks = run::gather_rank_counters(layout.comm(), mine);
+  ASSERT_EQ(static_cast<int>(ranks.size()), layout.comm().size());
+  double fluid = 0.0, solids = 0.0, owned = 0.0;
+  for (const auto& r : ranks) {
+    fluid += r.fluid_cells;
+    solids += r.solids_cells;
+    owned += r.owned_cells;
+  }
+  EXPECT_EQ(fluid, 96.0);
+  EXPECT_EQ(solids, 48.0);
+  EXPECT_EQ(owned, static_cast<double>(6 * 6 * 8)) << "every stored cell of the box is owned once";
+  EXPECT_EQ(ranks[static_cast<std::size_t>(layout.comm().rank())].solids_cells, mine.solids_cells);
+}
+
+TEST(RankBalance, ThresholdExcludesTraces) {
+  const HalfFilledBox box;
+  EXPECT_EQ(run::count_rank(box.domain.layout, box.state, 0.5, {}).solids_cells, 0.0);
+}
+
+TEST(RankBalance, TableGivesMaxOverMin) {
+  const std::vector<run::RankCounters> ranks = {{10, 8, 0, {3.0, 1.0, 1.0}},
+                                                {12, 8, 4, {6.0, 2.0, 0.2}}};
+  const auto table = run::rank_balance_table(ranks);
+  EXPECT_NE(table.find("max/min       1.20       1.00        inf         2.00       2.00       5.00"),
+            std::string::npos)
+      << table;
+  EXPECT_NE(table.find("25.0"), std::string::npos) << "rank 0 waits 1 s of 4\n" << table;
+  EXPECT_EQ(run::rank_balance_line(ranks),
+            "ranks: fluid cells max/min 1.00, solids cells inf, assembly 2.00, solves 2.00; "
+            "wait 2.5–25.0 %");
+}
+
+}  // namespace
+}  // namespace bagnold::tests

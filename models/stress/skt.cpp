@@ -58,7 +58,7 @@ void Skt::evaluate_at_temperature(const Material& material, const SolidsState& i
     const double phi = in.solids_fraction[i] > 0.0 ? in.solids_fraction[i] : 0.0;
     const double theta = in.temperature[i] > 0.0 ? in.temperature[i] : 0.0;
     const double root = std::sqrt(theta);
-    const auto f = transport_factors(phi, material, *m_radial, m_dense);
+    const auto f = transport_factors(phi, material, critical, *m_radial, m_dense);
     const Dual quasi_static = phi > 0.0 ? m_dense.quasi_static_pressure(Dual::variable(phi), critical,
                                                                        material.stiffness / material.diameter,
                                                                        material.friction)

@@ -10,11 +10,10 @@
 
 namespace bagnold::models::skt {
 
-TransportFactors transport_factors(double phi, const Material& m, const rdf::RadialDistribution& radial,
-                                   const DenseLimit& dense) {
+TransportFactors transport_factors(double phi, const Material& m, double critical,
+                                   const rdf::RadialDistribution& radial, const DenseLimit& dense) {
   TransportFactors f;
   if (!(phi > 0.0)) return f;
-  const double critical = chialvo2012::critical_fraction(m.friction);
   const double e = m.restitution, rho = m.density, d = m.diameter;
   const Dual fraction = Dual::variable(phi);
   const Dual g0 = rdf::evaluate(radial, dense.capped(fraction, critical), critical);
@@ -33,8 +32,9 @@ void GranularEnergy::evaluate(const Material& material, const KineticInput& in, 
         out.bulk_viscosity.size(), out.conductivity.size(), out.dissipation_coefficient.size(),
         out.slip_production.size(), out.held.size()})
     if (size != n) throw std::invalid_argument("garzo-dufty: input and output arrays differ in length");
+  const double critical = chialvo2012::critical_fraction(material.friction);
   for (std::size_t i = 0; i < n; ++i) {
-    const auto f = transport_factors(in.solids_fraction[i], material, *m_radial, m_dense);
+    const auto f = transport_factors(in.solids_fraction[i], material, critical, *m_radial, m_dense);
     const double root = std::sqrt(std::max(in.temperature[i], 0.0));
     out.pressure_per_temperature[i] = f.pressure.value;
     out.shear_viscosity[i] = f.shear * root;

@@ -21,7 +21,8 @@ struct TransportFactors {
   Dual pressure;  // P_s/Θ, with d/dφ at fixed Θ
   double shear = 0.0, bulk = 0.0, conductivity = 0.0, dissipation = 0.0;
 };
-TransportFactors transport_factors(double phi, const Material& material,
+// critical: φ_c(μ) of the material (chialvo2012::critical_fraction), computed once per call.
+TransportFactors transport_factors(double phi, const Material& material, double critical,
                                    const rdf::RadialDistribution& radial, const DenseLimit& dense);
 
 class GranularEnergy final : public GranularEnergyTheory {

@@ -101,6 +101,7 @@ void Closures::evaluate_solids_stress(const Discretization& discretization, run:
   compute_strain_rate(discretization, state.solids_velocity, fields.strain_rate,
                       fields.divergence[solids], m_wall_shear_regions);
   const double weight = m_relaxation_time > 0.0 ? dt / m_relaxation_time : 0.0;
+  const bool transported = m_stress->granular_energy() != nullptr;
   m_cells.clear();
   for (int l = 0; l < layout.local_count(); ++l) {
     if (layout.kind(l) != grid::CellKind::fluid) continue;
@@ -108,8 +109,10 @@ void Closures::evaluate_solids_stress(const Discretization& discretization, run:
     const std::size_t k = m_cells.size();
     m_cells.push_back(l);
     m_fraction[k] = std::max(state.solids_fraction[i], 0.0);  // round-off below 0 at an emptying cell
-    m_transported[k] = state.granular_temperature[i];
-    m_drag_at[k] = fields.drag[i];
+    if (transported) {
+      m_transported[k] = state.granular_temperature[i];
+      m_drag_at[k] = fields.drag[i];
+    }
     m_rate[k] = fields.strain_rate[i];
     m_divergence[k] = fields.divergence[solids][i];
     const double before = old.pressure_shear_rate[i];
@@ -123,7 +126,7 @@ void Closures::evaluate_solids_stress(const Discretization& discretization, run:
   models::SolidsStress out{part(m_pressure), part(m_derivative), part(m_shear), part(m_bulk),
                            part(m_temperature)};
   models::SolidsState in{input(m_fraction), input(m_rate), input(m_divergence)};
-  if (m_stress->granular_energy()) {
+  if (transported) {
     in.temperature = input(m_transported);
     in.drag = input(m_drag_at);
   }

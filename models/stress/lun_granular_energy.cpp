@@ -10,7 +10,7 @@
 namespace bagnold::models::lun1984 {
 
 PointTerms point_terms(double phi, double temperature, double drag, double slip_speed,
-                       double gas_viscosity, const Material& m) {
+                       double gas_viscosity, const Material& m, double slip_temperature_floor) {
   using std::numbers::pi;
   PointTerms t;
   if (!(phi > 0.0)) return t;
@@ -25,7 +25,7 @@ PointTerms point_terms(double phi, double temperature, double drag, double slip_
       12.0 * (1.0 - m.restitution * m.restitution) * rho * phi * phi_g0 / (std::sqrt(pi) * d);
   const double theta = temperature > 0.0 ? temperature : 0.0;
   t.slip_production = 81.0 * phi * std::pow(gas_viscosity * slip_speed, 2) /
-                      (g0 * d * d * d * rho * std::sqrt(pi) * std::sqrt(theta + 1e-15));
+                      (g0 * d * d * d * rho * std::sqrt(pi) * std::sqrt(theta + slip_temperature_floor));
   if (theta <= 0.0) return t;
   const double collision = rho * phi_g0 * theta;  // ρ_s φ g0 Θ
   const double dilute_viscosity = 5.0 * rho * d * std::sqrt(pi * theta) / 96.0;
@@ -59,7 +59,8 @@ void GranularEnergy::evaluate(const Material& material, const KineticInput& in,
     const double phi = in.solids_fraction[i];
     const bool held = phi > m_held_above;
     const PointTerms t = point_terms(phi, held ? 0.0 : in.temperature[i], in.drag[i],
-                                     in.slip_speed[i], in.gas_viscosity, material);
+                                     in.slip_speed[i], in.gas_viscosity, material,
+                                     m_slip_temperature_floor);
     out.pressure_per_temperature[i] = t.pressure_per_temperature.value;
     out.shear_viscosity[i] = t.shear_viscosity;
     out.bulk_viscosity[i] = t.bulk_viscosity;

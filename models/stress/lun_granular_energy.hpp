@@ -27,6 +27,9 @@
 namespace bagnold::models::lun1984 {
 
 inline constexpr double mfix_alpha = 1.6;  // α of MFIX's (2 + α)/3
+// The default of mfix-default's slip_temperature_floor [m²/s²]: MFIX's SMALL_NUMBER, added to Θ
+// under the square root of Koch & Sangani's slip production so that it is finite where Θ = 0.
+inline constexpr double default_slip_temperature_floor = 1e-15;
 
 // The terms at one point; pressure_per_temperature carries d/dφ (at fixed Θ) in its slope.
 struct PointTerms {
@@ -35,20 +38,24 @@ struct PointTerms {
   double dissipation_coefficient = 0.0, slip_production = 0.0;
 };
 // φ ≤ 0 or Θ ≤ 0 give zero viscosities and conductivity (MFIX: μ* = κ* = 0 at Θ → 0).
+// slip_temperature_floor: Θ_floor in the slip production's √(Θ + Θ_floor).
 PointTerms point_terms(double phi, double temperature, double drag, double slip_speed,
-                       double gas_viscosity, const Material& material);
+                       double gas_viscosity, const Material& material,
+                       double slip_temperature_floor = default_slip_temperature_floor);
 
 // The theory as the granular energy equation takes it. held_above: Θ is held at 0 where
 // φ > held_above (mfix-default: the plastic regime ε_g < ε_g*, as MFIX's
 // SOLVE_GRANULAR_ENERGY does with Schaeffer's friction); above 1 it never is.
 class GranularEnergy final : public GranularEnergyTheory {
  public:
-  explicit GranularEnergy(double held_above) : m_held_above(held_above) {}
+  GranularEnergy(double held_above, double slip_temperature_floor)
+      : m_held_above(held_above), m_slip_temperature_floor(slip_temperature_floor) {}
   std::string name() const override { return "lun-1984"; }
   void evaluate(const Material& material, const KineticInput& in, KineticTerms& out) const override;
 
  private:
   double m_held_above;
+  double m_slip_temperature_floor;
 };
 
 }  // namespace bagnold::models::lun1984

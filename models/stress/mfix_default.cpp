@@ -101,7 +101,7 @@ MfixDefault::MfixDefault(const Constants& constants, const DiluteLimit& dilute,
       throw std::invalid_argument(
           "mfix-default: granular_energy = \"transport\" needs kinetic_theory = \"lun\" "
           "(MFIX transports Θ with LUN_1984; Syamlal's theory is algebraic)");
-    m_transport.emplace(constants.plastic.packed_fraction());
+    m_transport.emplace(constants.plastic.packed_fraction(), constants.slip_temperature_floor);
   }
 }
 
@@ -190,7 +190,8 @@ Constants read_constants(const Coefficients& c) {
           .internal_friction_angle = real_coefficient(c, "internal_friction_angle"),
           .theory = string_coefficient(c, "kinetic_theory") == "lun" ? KineticTheory::lun
                                                                      : KineticTheory::syamlal,
-          .transport = string_coefficient(c, "granular_energy") == "transport"};
+          .transport = string_coefficient(c, "granular_energy") == "transport",
+          .slip_temperature_floor = real_coefficient(c, "slip_temperature_floor")};
 }
 
 [[maybe_unused]] const bool registered = stress_registry().add(
@@ -210,7 +211,15 @@ Constants read_constants(const Coefficients& c) {
                        "dissipation (MFIX's GRANULAR_ENERGY = .FALSE.); transport = the granular "
                        "energy equation with convection, conduction and the gas–solids exchange "
                        "(MFIX's KT_TYPE = 'LUN_1984': needs kinetic_theory = \"lun\", and "
-                       "initial granular_temperature).")},
+                       "initial granular_temperature)."),
+           real_spec("slip_temperature_floor", "m^2/s^2", lun1984::default_slip_temperature_floor,
+                     1e-30, 1e-6,
+                     "A regularization of the transport form: Θ_floor in Koch & Sangani's slip "
+                     "production 81 φ (μ_g |u_g − u_s|)² / (g0 d³ ρ_s √π √(Θ + Θ_floor)) "
+                     "(MFIX's SMALL_NUMBER), so that the production is finite where Θ = 0. It "
+                     "changes the production only where Θ is within a few Θ_floor of 0, i.e. in a "
+                     "cell whose Θ is just starting to rise; the bubbling bed's averages do not "
+                     "move with it 10x smaller (cases/fluidized-bed/README.md).")},
           DiluteLimit::specs(),
           ViscosityLimits::specs(100.0)}),
      .make = [](const Coefficients& c) -> std::unique_ptr<SolidsStressModel> {

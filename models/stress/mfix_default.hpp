@@ -37,6 +37,7 @@ struct Constants {
   double internal_friction_angle = 30.0;  // φ_f [deg]
   KineticTheory theory = KineticTheory::syamlal;
   bool transport = false;  // granular_energy = "transport"
+  double slip_temperature_floor = lun1984::default_slip_temperature_floor;  // [m²/s²]
 };
 
 class MfixDefault final : public SolidsStressModel {

@@ -10,13 +10,15 @@
 namespace bagnold::solver {
 
 GranularEnergyEquation::GranularEnergyEquation(const Discretization& discretization,
-                                               const Closures& closures, double solids_density)
+                                               const Closures& closures, double solids_density,
+                                               double vacant_fraction)
     : m_discretization(discretization),
       m_theory(*closures.stress()->granular_energy()),
       m_closure(*closures.stress()),
       m_material(closures.material()),
       m_density(solids_density),
-      m_gas_viscosity(closures.gas_viscosity()) {
+      m_gas_viscosity(closures.gas_viscosity()),
+      m_vacant_fraction(vacant_fraction) {
   const auto& regions = discretization.domain().regions;
   for (std::size_t r = 0; r < regions.regions.size(); ++r) {
     const auto& region = regions.regions[r];
@@ -29,11 +31,9 @@ GranularEnergyEquation::GranularEnergyEquation(const Discretization& discretizat
       m_walls.emplace_back();
   }
   const auto& numbering = discretization.cell_numbering();
-  KrylovSettings energy;  // convection makes it non-symmetric
-  energy.ksp_type = "bcgs";
-  energy.pc_type = "bjacobi";
-  energy.relative_tolerance = linear_relative_tolerance;
-  energy.absolute_tolerance = linear_absolute_tolerance;
+  // BiCGStab with block Jacobi (KrylovSettings' defaults): convection makes it non-symmetric.
+  const KrylovSettings energy{.relative_tolerance = linear_relative_tolerance,
+                             .absolute_tolerance = linear_absolute_tolerance};
   m_system = std::make_unique<LinearSystem>(discretization.layout().comm().get(),
                                             discretization.cell_pattern(solids),
                                             numbering.first_row, "granular_energy_", energy);
@@ -96,7 +96,7 @@ bool GranularEnergyEquation::solve(const run::FlowState& old, double dt,
     const auto i = static_cast<std::size_t>(l);
     const double volume = disc.volume(l);
     const double start = std::isfinite(old.granular_temperature[i]) ? std::max(old.granular_temperature[i], 0.0) : 0.0;
-    const bool empty = m_held[i] > 0.0 || m_fraction[i] <= vacant_fraction;
+    const bool empty = m_held[i] > 0.0 || m_fraction[i] <= m_vacant_fraction;
     const double accumulation = 1.5 * m_density * std::max(old.solids_fraction[i], 0.0) * volume / dt;
     double a_p = 0.0, b = 0.0, neighbours = 0.0;  // neighbours: Σ a_nb Θ*_nb
     std::int64_t columns[7];

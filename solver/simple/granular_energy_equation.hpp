@@ -19,7 +19,7 @@
 // centre's tangential slip): A √Θ* into b, B Θ^{3/2} linearized by Newton as the dissipation.
 // Every other wall, opening and blocked cell conducts no energy (adiabatic); solids entering
 // through an inflow bring Θ = 0. Cells where the theory holds Θ
-// (mfix-default's plastic regime) or that hold no solids (ε_s ≤ vacant_fraction) get Θ = 0.
+// (mfix-default's plastic regime) or that hold no solids (ε_s ≤ numerics.vacant_fraction) get Θ = 0.
 // Its residual is Σ|R_P| / Σ max(|a_P Θ*_P|, |b_P|) at the iterate, before the solve.
 
 #include <memory>
@@ -42,11 +42,10 @@ class GranularEnergyEquation {
  public:
   static constexpr double linear_relative_tolerance = 1e-10;
   static constexpr double linear_absolute_tolerance = 1e-20;
-  // ε_s at or below which a cell holds no solids and Θ = 0 (MFIX's ZERO_EP_S).
-  static constexpr double vacant_fraction = 1e-8;
-
+  // vacant_fraction: ε_s at or below which a cell holds no solids and Θ = 0
+  // (numerics.vacant_fraction, MFIX's ZERO_EP_S).
   GranularEnergyEquation(const Discretization& discretization, const Closures& closures,
-                         double solids_density);
+                         double solids_density, double vacant_fraction);
 
   // Solves for Θ (state.granular_temperature) with the iterate's velocities, fractions and
   // closures; `old` is the step's start. Adds its residual's local sums, the clamp count and
@@ -69,6 +68,7 @@ class GranularEnergyEquation {
   models::Material m_material;
   double m_density;        // ρ_s
   double m_gas_viscosity;  // μ_g, 0 without moving gas
+  double m_vacant_fraction;  // numerics.vacant_fraction
   std::unique_ptr<LinearSystem> m_system;
   std::vector<double> m_x;  // owned rows
   // The theory's terms at every local cell (0 outside fluid cells), and its inputs.

@@ -26,11 +26,9 @@ VolumeFractionCorrection::VolumeFractionCorrection(const Discretization& discret
                                                    const Closures& closures)
     : m_discretization(discretization), m_limit(discretization, settings, closures) {
   const auto& numbering = discretization.cell_numbering();
-  KrylovSettings fraction;  // convection makes it non-symmetric
-  fraction.ksp_type = "bcgs";
-  fraction.pc_type = "bjacobi";
-  fraction.relative_tolerance = linear_relative_tolerance;
-  fraction.absolute_tolerance = linear_absolute_tolerance;
+  // BiCGStab with block Jacobi (KrylovSettings' defaults): convection makes it non-symmetric.
+  const KrylovSettings fraction{.relative_tolerance = linear_relative_tolerance,
+                             .absolute_tolerance = linear_absolute_tolerance};
   m_system = std::make_unique<LinearSystem>(discretization.layout().comm().get(),
                                             discretization.cell_pattern(solids), numbering.first_row, "solids_fraction_", fraction);
   m_x.resize(static_cast<std::size_t>(numbering.owned_rows()));

@@ -144,6 +144,7 @@ struct Numerics {
   int hard_outer_iterations = 0;         // above (if > 0): the next step shrinks
   double dt_growth = 1.2;                // factor after an easy step
   double max_courant = 0.5;              // largest |u| dt/δ of either phase
+  double vacant_fraction = 1e-8;         // ε_s at or below which Θ = 0 (granular energy equation)
   double relax_velocity = 0.7;           // α_u
   bool wall_shear_in_strain_rate = true;  // no-slip walls' shear in the wall cells' γ̇
   std::string viscosity_average = "arithmetic";  // arithmetic | harmonic

@@ -327,6 +327,13 @@ const Section<Numerics>& numerics_section() {
                "The implicit scheme stays stable above 1; the limit keeps a step from carrying "
                "material across more than half a cell, which the outer iteration then "
                "converges at a cost of accuracy. Monitor column `courant`."),
+      key(&Numerics::vacant_fraction, "vacant_fraction").unit("-").init().within(1e-14, 1e-4)
+          .doc("A regularization of the granular energy equation (a closure with granular_energy "
+               "= \"transport\"): a cell whose ε_s is at or below it holds no solids to carry "
+               "fluctuation energy, and its Θ is set to 0 (MFIX's ZERO_EP_S). It changes Θ only in "
+               "cells with less solids than this, whose stresses are negligible at any Θ; the "
+               "bubbling bed's averages do not move with it 10x smaller "
+               "(cases/fluidized-bed/README.md)."),
       key(&Numerics::relax_velocity, "relax_velocity").unit("-").init().within(0.05, 1.0)
           .doc("Under-relaxation of the momentum equations, α_u."),
       key(&Numerics::wall_shear_in_strain_rate, "wall_shear_in_strain_rate").init()

@@ -117,7 +117,8 @@ TEST(GranularEnergy, SteadySimpleShearBalancesProductionAndDissipation) {
     Case c(transported(phi, 1e-3, closure));
     run::set_initial_state(c.deck, c.domain, c.state);
     solver::Closures closures(c.deck, c.disc);
-    solver::GranularEnergyEquation equation(c.disc, closures, c.deck.solids.material.density);
+    solver::GranularEnergyEquation equation(c.disc, closures, c.deck.solids.material.density,
+                                          c.deck.numerics.vacant_fraction);
     solver::ClosureFields fields(static_cast<std::size_t>(c.local_count()));
     std::fill(fields.strain_rate.begin(), fields.strain_rate.end(), rate);
     solver::CarriedFractions carried(static_cast<std::size_t>(c.local_count()));
@@ -158,7 +159,8 @@ TEST(GranularEnergy, StaysNonNegativeUnderACompressingShearingFlow) {
   closures.evaluate(c.disc, c.state, c.old, 1e-3, fields);
   solver::CarriedFractions carried(static_cast<std::size_t>(c.local_count()));
   solver::carry_all_fractions(c.disc, c.state, carried);
-  solver::GranularEnergyEquation equation(c.disc, closures, c.deck.solids.material.density);
+  solver::GranularEnergyEquation equation(c.disc, closures, c.deck.solids.material.density,
+                                          c.deck.numerics.vacant_fraction);
   solver::IterationSums sums;
   solver::WorstCells worst;
   solver::StepResult record;
@@ -191,7 +193,8 @@ TEST(GranularEnergy, JohnsonJacksonWallsHeatASlidingPlug) {
                        "granular_temperature = 1e-4\nsolids_velocity = [0.2, 0.0, 0.0]\n"));
   run::set_initial_state(c.deck, c.domain, c.state);
   solver::Closures closures(c.deck, c.disc);
-  solver::GranularEnergyEquation equation(c.disc, closures, c.deck.solids.material.density);
+  solver::GranularEnergyEquation equation(c.disc, closures, c.deck.solids.material.density,
+                                          c.deck.numerics.vacant_fraction);
   solver::ClosureFields fields(static_cast<std::size_t>(c.local_count()));  // no shear
   solver::CarriedFractions carried(static_cast<std::size_t>(c.local_count()));
   ASSERT_TRUE(settle(c, equation, fields, carried, 100));
@@ -208,6 +211,28 @@ TEST(GranularEnergy, JohnsonJacksonWallsHeatASlidingPlug) {
   ASSERT_GT(gain, 0.0);
   for (int l = 0; l < c.owned_fluid(); ++l)
     EXPECT_NEAR(c.state.granular_temperature[static_cast<std::size_t>(l)], expected, 1e-12 * expected);
+}
+
+// numerics.vacant_fraction: a cell with ε_s at or below it holds no solids and its Θ is 0;
+// above it the same cell keeps its fluctuation energy and cools.
+TEST(GranularEnergy, CellsAtOrBelowTheVacantFractionHoldNoTemperature) {
+  auto mean_temperature_after_a_step = [](const std::string& vacant) {
+    Case c(unit_deck(3, 3, 3, "\"x\", \"y\", \"z\"", 0.0,
+                     two_fluid("mfix-default", false) + transport_section("mfix-default") +
+                         tight_linear_solves + "tolerance = 1e-10\nmax_outer_iterations = 50\n" +
+                         vacant + "[[initial]]\nsolids_fraction = 5e-9\ngranular_temperature = 0.01\n"));
+    solver::FlowSolver flow(c.deck, c.domain);
+    run::set_initial_state(c.deck, c.domain, c.state);
+    flow.apply_boundary_values(c.state);
+    c.old = c.state;
+    const auto result = flow.advance(c.state, c.old, 1e-4);
+    EXPECT_TRUE(result.converged) << result.failure;
+    return owned_mean_temperature(c, c.state);
+  };
+  EXPECT_EQ(mean_temperature_after_a_step(""), 0.0);  // the default, 1e-8
+  const double kept = mean_temperature_after_a_step("vacant_fraction = 1e-9\n");
+  EXPECT_GT(kept, 0.0099);
+  EXPECT_LE(kept, 0.01);
 }
 
 }  // namespace

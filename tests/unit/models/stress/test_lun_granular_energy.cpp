@@ -117,5 +117,26 @@ TEST(MfixDefaultTransport, OnlyLunsTheoryIsTransported) {
                std::invalid_argument);
 }
 
+// slip_temperature_floor is the Θ_floor of √(Θ + Θ_floor) in the slip production: at Θ = 0 the
+// production scales as Θ_floor^(-1/2), and at a Θ far above it the floor does not show.
+TEST(MfixDefaultTransport, SlipTemperatureFloorActsOnlyNearZeroTemperature) {
+  Material m;
+  auto slip_production = [&](double floor, double theta) {
+    const auto model = make_model("mfix-default", {{"kinetic_theory", std::string("lun")},
+                                                   {"granular_energy", std::string("transport")},
+                                                   {"packed_gas_fraction", 0.42},
+                                                   {"slip_temperature_floor", floor}});
+    const std::vector<double> phi = {0.3}, temperature = {theta}, beta = {2e4}, slip = {0.2};
+    std::vector<double> p(1), mu(1), lambda(1), kappa(1), c(1), s(1), held(1);
+    models::KineticTerms out{p, mu, lambda, kappa, c, s, held};
+    model->granular_energy()->evaluate(m, {phi, temperature, beta, slip, 1.8e-5}, out);
+    return s[0];
+  };
+  EXPECT_NEAR(slip_production(1e-16, 0.0) / slip_production(1e-15, 0.0), std::sqrt(10.0), 1e-12);
+  EXPECT_NEAR(slip_production(1e-16, 1e-3) / slip_production(1e-15, 1e-3), 1.0, 1e-11);
+  EXPECT_DOUBLE_EQ(slip_production(1e-15, 1e-3),
+                   models::lun1984::point_terms(0.3, 1e-3, 2e4, 0.2, 1.8e-5, m).slip_production);
+}
+
 }  // namespace
 }  // namespace bagnold::tests

@@ -214,12 +214,13 @@ Constants read_constants(const Coefficients& c) {
                        "initial granular_temperature)."),
            real_spec("slip_temperature_floor", "m^2/s^2", lun1984::default_slip_temperature_floor,
                      1e-30, 1e-6,
-                     "A regularization of the transport form: Θ_floor in Koch & Sangani's slip "
+                     "A regularization of the transport form: Θ_floor [m^2/s^2] in Koch & Sangani's slip "
                      "production 81 φ (μ_g |u_g − u_s|)² / (g0 d³ ρ_s √π √(Θ + Θ_floor)) "
                      "(MFIX's SMALL_NUMBER), so that the production is finite where Θ = 0. It "
                      "changes the production only where Θ is within a few Θ_floor of 0, i.e. in a "
-                     "cell whose Θ is just starting to rise; the bubbling bed's averages do not "
-                     "move with it 10x smaller (cases/fluidized-bed/README.md).")},
+                     "cell whose Θ is just starting to rise; the bubbling bed's averages move with "
+                     "it 10x smaller no more than with a 1 % change of the first dt "
+                     "(cases/fluidized-bed/README.md).")},
           DiluteLimit::specs(),
           ViscosityLimits::specs(100.0)}),
      .make = [](const Coefficients& c) -> std::unique_ptr<SolidsStressModel> {

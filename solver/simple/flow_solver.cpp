@@ -20,9 +20,7 @@ FlowSolver::FlowSolver(const deck::Deck& deck, const parallel::Domain& domain)
   if (m_settings.moves[solids])
     m_fraction = std::make_unique<VolumeFractionCorrection>(m_discretization, m_settings, m_closures);
   if (m_settings.moves[solids] && m_closures.stress() && m_closures.stress()->granular_energy())
-    m_energy = std::make_unique<GranularEnergyEquation>(m_discretization, m_closures,
-                                                        m_settings.density[solids],
-                                                        deck.numerics.vacant_fraction);
+    m_energy = std::make_unique<GranularEnergyEquation>(m_discretization, m_settings, m_closures);
   if (m_settings.anderson_depth > 0)
     m_anderson = std::make_unique<AndersonMixing>(domain.layout, m_settings.anderson_depth);
 }

@@ -10,15 +10,15 @@
 namespace bagnold::solver {
 
 GranularEnergyEquation::GranularEnergyEquation(const Discretization& discretization,
-                                               const Closures& closures, double solids_density,
-                                               double vacant_fraction)
+                                               const SolverSettings& settings,
+                                               const Closures& closures)
     : m_discretization(discretization),
       m_theory(*closures.stress()->granular_energy()),
       m_closure(*closures.stress()),
       m_material(closures.material()),
-      m_density(solids_density),
+      m_density(settings.density[solids]),
       m_gas_viscosity(closures.gas_viscosity()),
-      m_vacant_fraction(vacant_fraction) {
+      m_vacant_fraction(settings.vacant_fraction) {
   const auto& regions = discretization.domain().regions;
   for (std::size_t r = 0; r < regions.regions.size(); ++r) {
     const auto& region = regions.regions[r];

@@ -33,6 +33,7 @@
 #include "solver/petsc/linear_system.hpp"
 #include "solver/simple/closures.hpp"
 #include "solver/simple/iteration_fields.hpp"
+#include "solver/simple/solver_settings.hpp"
 #include "solver/simple/step_record.hpp"
 #include "src/run/flow_state.hpp"
 
@@ -42,10 +43,9 @@ class GranularEnergyEquation {
  public:
   static constexpr double linear_relative_tolerance = 1e-10;
   static constexpr double linear_absolute_tolerance = 1e-20;
-  // vacant_fraction: ε_s at or below which a cell holds no solids and Θ = 0
-  // (numerics.vacant_fraction, MFIX's ZERO_EP_S).
-  GranularEnergyEquation(const Discretization& discretization, const Closures& closures,
-                         double solids_density, double vacant_fraction);
+  // Reads ρ_s and numerics.vacant_fraction (MFIX's ZERO_EP_S) from `settings`.
+  GranularEnergyEquation(const Discretization& discretization, const SolverSettings& settings,
+                         const Closures& closures);
 
   // Solves for Θ (state.granular_temperature) with the iterate's velocities, fractions and
   // closures; `old` is the step's start. Adds its residual's local sums, the clamp count and

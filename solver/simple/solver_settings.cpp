@@ -23,7 +23,8 @@ SolverSettings::SolverSettings(const deck::Deck& deck, const parallel::Domain& d
       net_force_residual(deck.numerics.net_force_residual),
       bulk_viscosity_ratio(deck.numerics.solids_bulk_viscosity_ratio),
       viscosity_average(deck::choice_value(deck::viscosity_average_choices,
-                                           deck.numerics.viscosity_average, "viscosity average")) {
+                                           deck.numerics.viscosity_average, "viscosity average")),
+      vacant_fraction(deck.numerics.vacant_fraction) {
   double extent = 0.0, g2 = 0.0;
   for (int d = 0; d < 3; ++d) {
     extent = std::max(extent, domain.grid.axis(d).faces().back() - domain.grid.axis(d).faces().front());

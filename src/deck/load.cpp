@@ -847,7 +847,8 @@ std::string key_reference_markdown() {
        "A top-level `extends = \"base.toml\"` (a string; a path relative to the deck's folder, or\n"
        "absolute) makes the deck the base deck with this file's keys laid over it: a table's keys\n"
        "replace the base's one by one, an array of tables (`[[boundary]]`, `[[initial]]`) replaces\n"
-       "the base's whole. A base deck may extend another, up to 8 levels.\n";
+       "the base's whole. A base deck may itself extend another: a chain of at most 8 base\n"
+       "decks (a longer chain, or a cycle, is refused).\n";
   reference_section(s, run_section(), "`[run]`");
   reference_section(s, physics_section(), "`[physics]`");
   reference_section(s, grid_section(), "`[grid]`");

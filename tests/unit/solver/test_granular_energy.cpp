@@ -117,8 +117,7 @@ TEST(GranularEnergy, SteadySimpleShearBalancesProductionAndDissipation) {
     Case c(transported(phi, 1e-3, closure));
     run::set_initial_state(c.deck, c.domain, c.state);
     solver::Closures closures(c.deck, c.disc);
-    solver::GranularEnergyEquation equation(c.disc, closures, c.deck.solids.material.density,
-                                          c.deck.numerics.vacant_fraction);
+    solver::GranularEnergyEquation equation(c.disc, solver::SolverSettings(c.deck, c.domain), closures);
     solver::ClosureFields fields(static_cast<std::size_t>(c.local_count()));
     std::fill(fields.strain_rate.begin(), fields.strain_rate.end(), rate);
     solver::CarriedFractions carried(static_cast<std::size_t>(c.local_count()));
@@ -159,8 +158,7 @@ TEST(GranularEnergy, StaysNonNegativeUnderACompressingShearingFlow) {
   closures.evaluate(c.disc, c.state, c.old, 1e-3, fields);
   solver::CarriedFractions carried(static_cast<std::size_t>(c.local_count()));
   solver::carry_all_fractions(c.disc, c.state, carried);
-  solver::GranularEnergyEquation equation(c.disc, closures, c.deck.solids.material.density,
-                                          c.deck.numerics.vacant_fraction);
+  solver::GranularEnergyEquation equation(c.disc, solver::SolverSettings(c.deck, c.domain), closures);
   solver::IterationSums sums;
   solver::WorstCells worst;
   solver::StepResult record;
@@ -193,8 +191,7 @@ TEST(GranularEnergy, JohnsonJacksonWallsHeatASlidingPlug) {
                        "granular_temperature = 1e-4\nsolids_velocity = [0.2, 0.0, 0.0]\n"));
   run::set_initial_state(c.deck, c.domain, c.state);
   solver::Closures closures(c.deck, c.disc);
-  solver::GranularEnergyEquation equation(c.disc, closures, c.deck.solids.material.density,
-                                          c.deck.numerics.vacant_fraction);
+  solver::GranularEnergyEquation equation(c.disc, solver::SolverSettings(c.deck, c.domain), closures);
   solver::ClosureFields fields(static_cast<std::size_t>(c.local_count()));  // no shear
   solver::CarriedFractions carried(static_cast<std::size_t>(c.local_count()));
   ASSERT_TRUE(settle(c, equation, fields, carried, 100));

@@ -37,7 +37,10 @@
 // its region's solids_pressure says: its fluid neighbour's, or 0; closures.hpp);
 // ((λ − ⅔ μ)∇·u)_n − ((λ − ⅔ μ)∇·u)_c) A over the fluid cells (∇·u = 0 beyond them, as an
 // outlet's P_s); ε_m ρ_m g_d V; the implicit-Euler term ε_m ρ_m V / dt (u_P − u_P^old); the gas's
-// optional manufactured source.
+// optional manufactured source. row.force sums the magnitudes of the forces among these that act
+// on the control volume (the weight ε_m ρ_m |g| V, the pressure and P_s forces, the boundary
+// stress a_nb |u_b − u_P| of walls and given velocities, the source), which the "force" residual
+// normalization measures against (momentum_residual.hpp).
 #include <algorithm>
 #include <cmath>
 
@@ -183,6 +186,7 @@ void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d
           const double a_nb = diffusion + std::max(-flux_out, 0.0);
           row.a += a_nb;
           row.b += a_nb * value;
+          row.force += a_nb * std::abs(value - at(l));
           break;
         }
         case LinkKind::zero_gradient:
@@ -194,9 +198,14 @@ void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d
     }
 
     const auto uc = static_cast<std::size_t>(l), un = static_cast<std::size_t>(n);
+    // The forces that act, also summed as magnitudes for the residual (momentum_residual.hpp).
+    auto act = [&row](double force) {
+      row.b += force;
+      row.force += std::abs(force);
+    };
     if (phase == gas || in.settings.moves[gas])
-      row.b += row.fraction * (state.gas_pressure[uc] - state.gas_pressure[un]) * row.area;
-    if (phase == solids) row.b += (state.solids_pressure[uc] - state.solids_pressure[un]) * row.area;
+      act(row.fraction * (state.gas_pressure[uc] - state.gas_pressure[un]) * row.area);
+    if (phase == solids) act((state.solids_pressure[uc] - state.solids_pressure[un]) * row.area);
     // The dilatational stress (λ − ⅔ μ) ∇·u, explicit like P_s, over the fluid cells only.
     const auto& divergence = in.closures.divergence[phase];
     auto dilatational = [&](int cell) {
@@ -207,7 +216,8 @@ void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d
     };
     row.b += (dilatational(n) - dilatational(l)) * row.area;
     row.b += row.fraction * rho * in.settings.gravity[ud] * row.volume;
-    if (phase == gas && !in.gas_source[ud].empty()) row.b += in.gas_source[ud][uc] * row.volume;
+    row.force += row.fraction * rho * in.settings.gravity_magnitude * row.volume;  // the weight
+    if (phase == gas && !in.gas_source[ud].empty()) act(in.gas_source[ud][uc] * row.volume);
     const double a_transient = row.fraction * rho * row.volume / in.dt;
     row.a += a_transient;
     row.transient = a_transient;

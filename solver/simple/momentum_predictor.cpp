@@ -7,7 +7,7 @@
 // is solved for each phase with the other phase's own row eliminated:
 //     (A_g − (βV)²/A_s) u_g = b_g + Σ a_nb u_nb + βV R_s / A_s       (and likewise the solids),
 // so a strong drag couples the phases within the predictor instead of across outer iterations.
-// Then Patankar under-relaxation (diag / α_u, b + (1 − α_u) diag u*), and one BiCGStab solve per
+// Then under-relaxation (velocity_relaxation.hpp), and one BiCGStab solve per
 // phase. Where the solids are below the threshold their velocity is zero (and the gas sees
 // β (0 − u_g)); a frozen solids phase enters with its given velocity.
 //
@@ -21,6 +21,7 @@
 #include <cmath>
 
 #include "solver/simple/momentum_predictor.hpp"
+#include "solver/simple/velocity_relaxation.hpp"
 
 namespace bagnold::solver {
 
@@ -63,7 +64,9 @@ bool MomentumPredictor::predict(int d, const Inputs& in, run::FlowState& state,
   const auto ud = static_cast<std::size_t>(d);
   const auto& numbering = disc.velocity_numbering(d);
   if (numbering.total_rows == 0) return true;  // e.g. no fluid faces along d
-  const double alpha = settings.relax_velocity;
+  auto relax = [&](double diagonal, double neighbours) {
+    return relaxed_diagonal(diagonal, neighbours, settings.relax_velocity, settings.velocity_relaxation);
+  };
   const auto& moves = settings.moves;
   auto& u_g = state.gas_velocity[ud];
   auto& u_s = state.solids_velocity[ud];
@@ -104,6 +107,10 @@ bool MomentumPredictor::predict(int d, const Inputs& in, run::FlowState& state,
   auto weight = [&](Phase phase, const MomentumRow& row) {
     return row.fraction * settings.density[phase] * row.volume * settings.gravity_magnitude;
   };
+  // The forces that act on a row (momentum_residual.hpp): the assembly's, the drag and the floor.
+  auto acting = [&](Phase phase, const MomentumRow& row, double drag) {
+    return row.force + drag + row.fraction * settings.density[phase] * row.volume * settings.least_acceleration;
+  };
   auto& x = m_x;
   for (auto& v : x) v.resize(numbering.owned_locals.size());
   worst.reset(gas_momentum_x + d);
@@ -123,9 +130,12 @@ bool MomentumPredictor::predict(int d, const Inputs& in, run::FlowState& state,
     const double R_g = g ? g->b + g->neighbours_u : 0.0, R_s = s ? s->b + s->neighbours_u : 0.0;
 
     if (g) {
-      const double row_residual = residual[gas].add(gas_sums, A_g, A_g * u_g[ul] - g->neighbours_u,
-                                                    A_g - g->neighbours_a, g->b + beta_v * u_s[ul],
-                                                    g->transient, weight(gas, *g));
+      const double drag_force = std::abs(beta_v * (u_s[ul] - u_g[ul]));
+      const double row_residual = residual[gas].add(
+          gas_sums, {.diagonal = A_g, .operator_u = A_g * u_g[ul] - g->neighbours_u,
+                     .operator_one = A_g - g->neighbours_a, .source = g->b + beta_v * u_s[ul],
+                     .transient = g->transient, .weight = weight(gas, *g),
+                     .force = acting(gas, *g, drag_force)});
       worst.record(gas_momentum_x + d, row_residual, l);
       double diagonal = A_g, rhs = g->b;
       if (s) {
@@ -134,7 +144,7 @@ bool MomentumPredictor::predict(int d, const Inputs& in, run::FlowState& state,
       } else {
         rhs += beta_v * u_s[ul];  // frozen solids, or none here (u_s = 0)
       }
-      const double relaxed = diagonal / alpha;
+      const double relaxed = relax(diagonal, g->neighbours_a);
       std::int64_t columns[7];
       double values[7];
       std::copy(g->columns, g->columns + g->count, columns);
@@ -142,16 +152,19 @@ bool MomentumPredictor::predict(int d, const Inputs& in, run::FlowState& state,
       columns[g->count] = numbering.global[ul];
       values[g->count] = relaxed;
       m_systems[gas][ud]->set_row(numbering.global[ul], columns, values, g->count + 1,
-                                  rhs + (1.0 - alpha) * relaxed * u_g[ul]);
+                                  rhs + (relaxed - diagonal) * u_g[ul]);
       x[gas][r] = u_g[ul];
     }
     if (moves[solids]) {
       const MomentumRow& row = rows[solids][r];
       double diagonal = 1.0, rhs = 0.0;
       if (s) {
-        const double row_residual = residual[solids].add(solids_sums, A_s, A_s * u_s[ul] - s->neighbours_u,
-                                                         A_s - s->neighbours_a, s->b + beta_v * u_g[ul],
-                                                         s->transient, weight(solids, *s));
+        const double drag_force = std::abs(beta_v * (u_g[ul] - u_s[ul]));
+        const double row_residual = residual[solids].add(
+            solids_sums, {.diagonal = A_s, .operator_u = A_s * u_s[ul] - s->neighbours_u,
+                          .operator_one = A_s - s->neighbours_a, .source = s->b + beta_v * u_g[ul],
+                          .transient = s->transient, .weight = weight(solids, *s),
+                          .force = acting(solids, *s, drag_force)});
         worst.record(solids_momentum_x + d, row_residual, l);
         diagonal = A_s;
         rhs = s->b;
@@ -159,8 +172,9 @@ bool MomentumPredictor::predict(int d, const Inputs& in, run::FlowState& state,
           diagonal -= beta_v * beta_v / A_g;
           rhs += beta_v * R_g / A_g;
         }
-        diagonal /= alpha;
-        rhs += (1.0 - alpha) * diagonal * u_s[ul];
+        const double relaxed = relax(diagonal, s->neighbours_a);
+        rhs += (relaxed - diagonal) * u_s[ul];
+        diagonal = relaxed;
       }
       std::int64_t columns[7];
       double values[7];
@@ -173,8 +187,8 @@ bool MomentumPredictor::predict(int d, const Inputs& in, run::FlowState& state,
     }
 
     // Velocity responses to the pressure and volume-fraction corrections.
-    const double D_g = g ? correction_diagonal(A_g / alpha, g->neighbours_a, settings.simplec) : 0.0;
-    const double D_s = s ? correction_diagonal(A_s / alpha, s->neighbours_a, settings.simplec) : 0.0;
+    const double D_g = g ? correction_diagonal(relax(A_g, g->neighbours_a), g->neighbours_a, settings.simplec) : 0.0;
+    const double D_s = s ? correction_diagonal(relax(A_s, s->neighbours_a), s->neighbours_a, settings.simplec) : 0.0;
     const double eps_g = g ? g->fraction : 0.0;
     const double eps_s = moves[solids] ? rows[solids][r].fraction : 0.0;
     // K ≥ 0: a closure whose P_s falls with ε_s at fixed strain rate (kinetic theory in its

@@ -7,18 +7,24 @@
 
 namespace bagnold::solver {
 
-double MomentumResidual::add(Sums& sums, double diagonal, double operator_u, double operator_one,
-                             double source, double transient, double weight) const {
+double MomentumResidual::add(Sums& sums, const Row& row) const {
   auto& [residual, norm, net, total_weight] = sums.values;
-  const double row_residual = std::abs(source - operator_u);
+  const double row_residual = std::abs(row.source - row.operator_u);
   residual += row_residual;
-  net += source - operator_u;
-  total_weight += weight;
-  if (m_kind == ResidualNormalization::deviation) {
-    const double uniform = operator_one * m_mean;
-    norm += std::abs(operator_u - uniform) + std::abs(source - uniform) + transient * m_least_speed;
-  } else {
-    norm += diagonal * m_velocity_scale;
+  net += row.source - row.operator_u;
+  total_weight += row.weight;
+  switch (m_kind) {
+    case ResidualNormalization::force:
+      norm += row.force;
+      break;
+    case ResidualNormalization::deviation: {
+      const double uniform = row.operator_one * m_mean;
+      norm += std::abs(row.operator_u - uniform) + std::abs(row.source - uniform) + row.transient * m_least_speed;
+      break;
+    }
+    case ResidualNormalization::velocity_scale:
+      norm += row.diagonal * m_velocity_scale;
+      break;
   }
   return row_residual;
 }

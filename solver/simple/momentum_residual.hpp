@@ -6,19 +6,25 @@
 //
 //   residual = Σ |s − L u| / norm, where norm is
 //
-//   "velocity-scale" (the default): Σ A U, U the residual velocity scale (the largest |u|).
+//   "force" (the default): Σ F, F the sum of the magnitudes of the forces that act on the row's
+//     control volume: its weight ε ρ V |g|, the pressure force ε (P_c − P_n) A, for the solids
+//     the P_s force (P_s,c − P_s,n) A, the drag βV (u_other − u), the stress of a wall or a given
+//     velocity a_b (u_b − u), a given body force, and ε ρ V a_min. The
+//     exchange between neighbouring rows (viscous, convective and dilatational stress, the
+//     deferred TVD and cross terms) is left out: it cancels for a layer translating as a plug,
+//     however large μ_s, so a plug whose acceleration is wrong by δa is judged against its
+//     weight (residual ≈ δa/|g|) and cannot hide behind a large viscosity or a short step.
+//     a_min (SolverSettings::least_acceleration, 10⁻³ |g| under gravity) keeps a row on which
+//     nothing acts (a fluid at rest without gravity) judged against a small acceleration instead
+//     of round-off; it does not depend on dt, so a short step loosens nothing.
+//   "velocity-scale": Σ A U, U the residual velocity scale (the largest |u|).
 //     With μ_s of 10⁴–10⁵ Pa s in an unsheared dense layer A is ~10⁴ × its transient part, and
 //     an iterate with a wrong acceleration passes (cases/chute/README.md, "False convergence").
 //   "deviation": Σ (|L u − L1 ū| + |s − L1 ū|) + Σ (ε ρ V/dt) U_min, with ū the mean of the
 //     phase's velocity over its solved rows (OpenFOAM's normalization factor). The parts of a
-//     row that cancel for a uniform field (viscous and convective exchange with the neighbours)
-//     enter only through the velocity's deviation from its mean, so a large viscosity cannot
-//     hide an unbalanced force: a layer translating as a plug is judged against the forces that
-//     accelerate it (gravity, walls, inertia). U_min = 10⁻³ of the reference speed keeps a fluid
-//     at rest (hydrostatic: s ≈ 0) judged against a small velocity change instead of
-//     round-off. The normalized residual is at most about 1 (triangle inequality). Not the
-//     default: the 10 mm bin takes 1.6x the steps with it (381 against 238 to 0.2 s, the same
-//     rate within 0.04 %; docs/stability.md).
+//     row that cancel for a uniform field enter only through the velocity's deviation from its
+//     mean; but at small dt the transient part (ε ρ V/dt)|u − ū| of a sheared layer outweighs
+//     the weight per row, and the free-slip chute accepts steps 6 % short of g sin θ.
 #include <array>
 #include <cstddef>
 #include <string>
@@ -47,6 +53,14 @@ class MomentumResidual {
     std::array<double, size> values{};
   };
 
+  // One row's terms: diagonal A; operator_u = L u; operator_one = L1; source = s; transient =
+  // ε ρ V/dt; weight = ε ρ V |g|; force = F, the magnitudes of the forces that act (above,
+  // a_min's share included).
+  struct Row {
+    double diagonal = 0.0, operator_u = 0.0, operator_one = 0.0, source = 0.0, transient = 0.0;
+    double weight = 0.0, force = 0.0;
+  };
+
   MomentumResidual() = default;
   // mean: ū over the phase's solved rows (all ranks); velocity_scale: U; least_speed: U_min;
   // net_force: whether value() also bounds the net residual against the weight.
@@ -55,16 +69,14 @@ class MomentumResidual {
       : m_kind(kind), m_mean(mean), m_velocity_scale(velocity_scale), m_least_speed(least_speed),
         m_net_force(net_force) {}
 
-  // One row (arguments as above; transient = ε ρ V/dt; weight = ε ρ V |g|) added to `sums`.
-  // Returns the row's residual |s − L u|.
-  double add(Sums& sums, double diagonal, double operator_u, double operator_one, double source,
-             double transient, double weight = 0.0) const;
+  // One row added to `sums`. Returns the row's residual |s − L u|.
+  double add(Sums& sums, const Row& row) const;
 
   // The normalized residual from sums over all ranks (0 without any residual).
   double value(const Sums& total) const;
 
  private:
-  ResidualNormalization m_kind = ResidualNormalization::deviation;
+  ResidualNormalization m_kind = ResidualNormalization::force;
   double m_mean = 0.0, m_velocity_scale = 1.0, m_least_speed = 0.0;
   bool m_net_force = false;
 };

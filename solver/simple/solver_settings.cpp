@@ -15,6 +15,8 @@ SolverSettings::SolverSettings(const deck::Deck& deck, const parallel::Domain& d
       max_outer_iterations(deck.numerics.max_outer_iterations),
       anderson_depth(deck.numerics.anderson_depth),
       relax_velocity(deck.numerics.relax_velocity),
+      velocity_relaxation(deck::choice_value(deck::velocity_relaxation_choices,
+                                             deck.numerics.velocity_relaxation, "velocity relaxation")),
       relax_pressure(deck.numerics.relax_pressure),
       simplec(deck::choice_value(deck::coupling_choices, deck.numerics.algorithm, "algorithm") ==
               deck::Coupling::simplec),
@@ -39,6 +41,7 @@ SolverSettings::SolverSettings(const deck::Deck& deck, const parallel::Domain& d
                                   std::abs(region.solids_velocity[static_cast<std::size_t>(d)])});
   if (reference_speed <= 0.0) reference_speed = 1.0;
   least_speed = 1e-3 * reference_speed;
+  least_acceleration = extent > 0.0 ? 1e-3 * reference_speed * reference_speed / extent : 1e-3;
 }
 
 }  // namespace bagnold::solver

@@ -25,15 +25,20 @@ struct SolverSettings {
   // The least velocity residuals are judged against [m/s], 1e-3 of the reference speed: a fluid
   // at rest is then measured against a small velocity change, not against round-off.
   double least_speed = 1e-3;
+  // The least acceleration a "force" momentum residual is judged against [m/s²]: 1e-3 of
+  // U²/L (U the reference speed, L the domain's largest extent), which is 1e-3 |g| when gravity
+  // sets U. A row on which nothing acts is then measured against ε ρ V times it.
+  double least_acceleration = 1e-3;
 
   double tolerance = 1e-4;  // numerics.tolerance
   int max_outer_iterations = 40;
-  int anderson_depth = 0;  // numerics.anderson_depth: 0 Picard
+  int anderson_depth = 5;  // numerics.anderson_depth: 0 Picard
   double relax_velocity = 0.7;  // α_u
+  deck::VelocityRelaxation velocity_relaxation = deck::VelocityRelaxation::diagonal;
   double relax_pressure = 1.0;  // α_p
   bool simplec = true;
   Limiter limiter = Limiter::superbee;
-  ResidualNormalization residual_normalization = ResidualNormalization::velocity_scale;
+  ResidualNormalization residual_normalization = ResidualNormalization::force;
   bool net_force_residual = false;
   double bulk_viscosity_ratio = 0.0;  // numerics.solids_bulk_viscosity_ratio: λ_s += r μ_s
   deck::ViscosityAverage viscosity_average = deck::ViscosityAverage::arithmetic;

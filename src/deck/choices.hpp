@@ -46,9 +46,10 @@ inline constexpr std::array<Choice<Limiter>, 5> limiter_choices{{{"upwind", Limi
                                                                  {"minmod", Limiter::minmod}}};
 
 // numerics.residual_normalization (solver/simple/momentum_residual.hpp).
-enum class ResidualNormalization { deviation, velocity_scale };
-inline constexpr std::array<Choice<ResidualNormalization>, 2> residual_normalization_choices{
-    {{"velocity-scale", ResidualNormalization::velocity_scale},
+enum class ResidualNormalization { force, deviation, velocity_scale };
+inline constexpr std::array<Choice<ResidualNormalization>, 3> residual_normalization_choices{
+    {{"force", ResidualNormalization::force},
+     {"velocity-scale", ResidualNormalization::velocity_scale},
      {"deviation", ResidualNormalization::deviation}}};
 
 // numerics.viscosity_average: how a face or edge viscosity is made from the cells around it
@@ -56,6 +57,12 @@ inline constexpr std::array<Choice<ResidualNormalization>, 2> residual_normaliza
 enum class ViscosityAverage { arithmetic, harmonic };
 inline constexpr std::array<Choice<ViscosityAverage>, 2> viscosity_average_choices{
     {{"arithmetic", ViscosityAverage::arithmetic}, {"harmonic", ViscosityAverage::harmonic}}};
+
+// numerics.velocity_relaxation: what the under-relaxation of a momentum row weighs
+// (solver/simple/velocity_relaxation.hpp).
+enum class VelocityRelaxation { diagonal, local };
+inline constexpr std::array<Choice<VelocityRelaxation>, 2> velocity_relaxation_choices{
+    {{"diagonal", VelocityRelaxation::diagonal}, {"local", VelocityRelaxation::local}}};
 
 // numerics.algorithm: the pressure-velocity coupling (solver/simple/momentum_predictor.cpp).
 enum class Coupling { simplec, simple };

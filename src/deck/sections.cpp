@@ -291,10 +291,12 @@ const Section<Numerics>& numerics_section() {
           .doc("A step has converged when every normalized residual is below this."),
       key(&Numerics::residual_normalization, "residual_normalization").init()
           .one_of(choice_names(residual_normalization_choices))
-          .doc("Momentum residuals over Σ a_P U (U the largest velocity), or over "
-               "Σ(|Lu − L1 ū| + |s − L1 ū|), the forces that do not cancel for a uniform field "
-               "(OpenFOAM's): the latter lets no large viscosity hide an unbalanced force "
-               "(the chute), at 1.6x the 10 mm bin's steps."),
+          .doc("What each momentum residual Σ|s − L u| is measured against. force: the forces "
+               "that act on each control volume (weight, pressure, P_s, drag, wall stress), so a "
+               "step passes only when the momentum equations hold to the tolerance times those "
+               "forces and no viscosity or short step can hide an unbalanced one. velocity-scale: "
+               "Σ a_P U (U the largest velocity), which a large μ_s inflates. deviation: "
+               "Σ(|Lu − L1 ū| + |s − L1 ū|) (OpenFOAM's), which a short step inflates."),
       key(&Numerics::net_force_residual, "net_force_residual").init()
           .doc("Whether each momentum residual must also have a small net: |Σ (s − L u)| over the "
                "phase's rows, against the phase's weight Σ ε ρ V |g|, below the tolerance. The "
@@ -336,6 +338,13 @@ const Section<Numerics>& numerics_section() {
                "change of the first dt (cases/fluidized-bed/README.md)."),
       key(&Numerics::relax_velocity, "relax_velocity").unit("-").init().within(0.05, 1.0)
           .doc("Under-relaxation of the momentum equations, α_u."),
+      key(&Numerics::velocity_relaxation, "velocity_relaxation").init()
+          .one_of(choice_names(velocity_relaxation_choices))
+          .doc("What α_u relaxes. diagonal (Patankar's, MFIX's): a row's whole diagonal a_P "
+               "becomes a_P/α_u. local: only the row's own part a_P − Σa_nb (inertia, drag, walls) "
+               "is scaled, a_P + (1/α_u − 1)(a_P − Σa_nb), so a large viscosity, whose links "
+               "cancel for a layer moving as a plug, does not slow the plug's iteration. Neither "
+               "changes a converged step."),
       key(&Numerics::wall_shear_in_strain_rate, "wall_shear_in_strain_rate").init()
           .doc("Whether a stationary no-slip solids wall's shear enters the closure's strain rate "
                "in the cells beside it (ghost value −u_c, as MFIX's ghost cells and the report's "

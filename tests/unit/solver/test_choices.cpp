@@ -18,8 +18,9 @@ TEST(Choices, ConvectionLimitersAreExactlyTheShippedOnes) {
 }
 
 TEST(Choices, ResidualNormalizationsAreExactlyTheShippedOnes) {
-  const std::vector<std::string> shipped = {"velocity-scale", "deviation"};
+  const std::vector<std::string> shipped = {"force", "velocity-scale", "deviation"};
   EXPECT_EQ(deck::choice_names(deck::residual_normalization_choices), shipped);
+  EXPECT_EQ(solver::residual_normalization_from_name("force"), solver::ResidualNormalization::force);
   EXPECT_EQ(solver::residual_normalization_from_name("deviation"), solver::ResidualNormalization::deviation);
   EXPECT_EQ(solver::residual_normalization_from_name("velocity-scale"),
             solver::ResidualNormalization::velocity_scale);

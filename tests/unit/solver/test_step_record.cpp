@@ -1,5 +1,5 @@
 // The residual bookkeeping of an outer iteration (momentum_residual.hpp, step_record.hpp): the
-// two normalizations and the net-force bound on hand-made rows, IterationSums::reduce over the
+// three normalizations and the net-force bound on hand-made rows, IterationSums::reduce over the
 // ranks, and which equation counts as the worst. On 1 and 2 ranks.
 #include <gtest/gtest.h>
 
@@ -16,15 +16,12 @@ namespace {
 using solver::MomentumResidual;
 using solver::ResidualNormalization;
 
-// One row as MomentumResidual::add takes it.
-struct Row {
-  double diagonal, operator_u, operator_one, source, transient, weight;
-};
+using Row = MomentumResidual::Row;  // diagonal, L u, L1, s, transient, weight, force
 
 double value_of(const MomentumResidual& residual, const std::vector<Row>& rows, std::vector<double>* row_residuals = nullptr) {
   MomentumResidual::Sums sums;
   for (const Row& r : rows) {
-    const double each = residual.add(sums, r.diagonal, r.operator_u, r.operator_one, r.source, r.transient, r.weight);
+    const double each = residual.add(sums, r);
     if (row_residuals) row_residuals->push_back(each);
   }
   return residual.value(sums);
@@ -60,6 +57,23 @@ TEST(MomentumResidual, DeviationNormalizesByTheForcesAboutTheMean) {
   EXPECT_LE(value_of(bare, any), 1.0 + 1e-15);
 }
 
+TEST(MomentumResidual, ForceNormalizesByTheForcesThatAct) {
+  // Σ F = 3 + 0.9, whatever the transient parts (a short step loosens nothing).
+  const std::vector<Row> rows = {{4.0, 1.0, 1.0, 1.5, 10.0, 0.0, 3.0}, {2.0, -0.5, 2.0, -0.2, 20.0, 0.0, 0.9}};
+  const MomentumResidual residual(ResidualNormalization::force, 0.5, 2.0, 0.01);
+  EXPECT_NEAR(value_of(residual, rows), 0.8 / 3.9, 1e-15);
+  // A row of a plug in a viscous layer (μ_s A/δ = 1e6 on each side, u = 1 everywhere) whose
+  // iterate leaves 1 % of its weight W = 2 N unbalanced (a 1 % wrong acceleration): the
+  // neighbours cancel, so the residual is 1e-2 against the weight, whatever the viscosity or dt
+  // (transient 2e3 = W/(g dt) at dt = 1e-4 s). The velocity scale calls it 1e-8.
+  const double a = 2e6 + 2e3, W = 2.0;
+  const std::vector<Row> plug = {{a, a * 1.0 - 2e6, 2e3, 2e3 * 1.0 - 0.01 * W, 2e3, W, W}};
+  EXPECT_NEAR(value_of(MomentumResidual(ResidualNormalization::force, 1.0, 1.0, 0.0), plug), 0.01, 1e-12);
+  EXPECT_LT(value_of(MomentumResidual(ResidualNormalization::velocity_scale, 1.0, 1.0, 0.0), plug), 1e-7);
+  // Nothing acts and nothing is left: zero, not 0/0.
+  EXPECT_EQ(value_of(residual, {{1.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0}}), 0.0);
+}
+
 TEST(MomentumResidual, NetForceMakesTheValueAtLeastTheNetOverTheWeight) {
   // Three rows each leaving +0.1 N, each weighing 0.2 N, against huge diagonals: the sum of
   // magnitudes is negligible against Σ A U, the net force is half the weight.
@@ -82,6 +96,7 @@ TEST(MomentumResidual, ZeroResidualIsZeroAndNamesAreChecked) {
   const std::vector<Row> exact = {{3.0, 1.0, 2.0, 1.0, 0.0, 1.0}};
   EXPECT_EQ(value_of(residual, exact), 0.0);
   EXPECT_EQ(value_of(residual, {}), 0.0);  // no rows at all (a phase without unknowns)
+  EXPECT_EQ(solver::residual_normalization_from_name("force"), ResidualNormalization::force);
   EXPECT_EQ(solver::residual_normalization_from_name("deviation"), ResidualNormalization::deviation);
   EXPECT_EQ(solver::residual_normalization_from_name("velocity-scale"), ResidualNormalization::velocity_scale);
   EXPECT_THROW(solver::residual_normalization_from_name("deviations"), std::invalid_argument);

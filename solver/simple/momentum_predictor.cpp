@@ -7,7 +7,7 @@
 // is solved for each phase with the other phase's own row eliminated:
 //     (A_g − (βV)²/A_s) u_g = b_g + Σ a_nb u_nb + βV R_s / A_s       (and likewise the solids),
 // so a strong drag couples the phases within the predictor instead of across outer iterations.
-// Then under-relaxation (velocity_relaxation.hpp), and one BiCGStab solve per
+// Then Patankar under-relaxation (diag / α_u, b + (1/α_u − 1) diag u*), and one BiCGStab solve per
 // phase. Where the solids are below the threshold their velocity is zero (and the gas sees
 // β (0 − u_g)); a frozen solids phase enters with its given velocity.
 //
@@ -21,7 +21,6 @@
 #include <cmath>
 
 #include "solver/simple/momentum_predictor.hpp"
-#include "solver/simple/velocity_relaxation.hpp"
 
 namespace bagnold::solver {
 
@@ -64,9 +63,7 @@ bool MomentumPredictor::predict(int d, const Inputs& in, run::FlowState& state,
   const auto ud = static_cast<std::size_t>(d);
   const auto& numbering = disc.velocity_numbering(d);
   if (numbering.total_rows == 0) return true;  // e.g. no fluid faces along d
-  auto relax = [&](double diagonal, double neighbours) {
-    return relaxed_diagonal(diagonal, neighbours, settings.relax_velocity, settings.velocity_relaxation);
-  };
+  const double alpha = settings.relax_velocity;
   const auto& moves = settings.moves;
   auto& u_g = state.gas_velocity[ud];
   auto& u_s = state.solids_velocity[ud];
@@ -144,7 +141,7 @@ bool MomentumPredictor::predict(int d, const Inputs& in, run::FlowState& state,
       } else {
         rhs += beta_v * u_s[ul];  // frozen solids, or none here (u_s = 0)
       }
-      const double relaxed = relax(diagonal, g->neighbours_a);
+      const double relaxed = diagonal / alpha;
       std::int64_t columns[7];
       double values[7];
       std::copy(g->columns, g->columns + g->count, columns);
@@ -172,7 +169,7 @@ bool MomentumPredictor::predict(int d, const Inputs& in, run::FlowState& state,
           diagonal -= beta_v * beta_v / A_g;
           rhs += beta_v * R_g / A_g;
         }
-        const double relaxed = relax(diagonal, s->neighbours_a);
+        const double relaxed = diagonal / alpha;
         rhs += (relaxed - diagonal) * u_s[ul];
         diagonal = relaxed;
       }
@@ -187,8 +184,8 @@ bool MomentumPredictor::predict(int d, const Inputs& in, run::FlowState& state,
     }
 
     // Velocity responses to the pressure and volume-fraction corrections.
-    const double D_g = g ? correction_diagonal(relax(A_g, g->neighbours_a), g->neighbours_a, settings.simplec) : 0.0;
-    const double D_s = s ? correction_diagonal(relax(A_s, s->neighbours_a), s->neighbours_a, settings.simplec) : 0.0;
+    const double D_g = g ? correction_diagonal(A_g / alpha, g->neighbours_a, settings.simplec) : 0.0;
+    const double D_s = s ? correction_diagonal(A_s / alpha, s->neighbours_a, settings.simplec) : 0.0;
     const double eps_g = g ? g->fraction : 0.0;
     const double eps_s = moves[solids] ? rows[solids][r].fraction : 0.0;
     // K ≥ 0: a closure whose P_s falls with ε_s at fixed strain rate (kinetic theory in its

@@ -6,7 +6,7 @@
 //
 //   residual = Σ |s − L u| / norm, where norm is
 //
-//   "force" (the default): Σ F, F the sum of the magnitudes of the forces that act on the row's
+//   "force": Σ F, F the sum of the magnitudes of the forces that act on the row's
 //     control volume: its weight ε ρ V |g|, the pressure force ε (P_c − P_n) A, for the solids
 //     the P_s force (P_s,c − P_s,n) A, the drag βV (u_other − u), the stress of a wall or a given
 //     velocity a_b (u_b − u), a given body force, and ε ρ V a_min. The
@@ -17,7 +17,7 @@
 //     a_min (SolverSettings::least_acceleration, 10⁻³ |g| under gravity) keeps a row on which
 //     nothing acts (a fluid at rest without gravity) judged against a small acceleration instead
 //     of round-off; it does not depend on dt, so a short step loosens nothing.
-//   "velocity-scale": Σ A U, U the residual velocity scale (the largest |u|).
+//   "velocity-scale" (the default): Σ A U, U the residual velocity scale (the largest |u|).
 //     With μ_s of 10⁴–10⁵ Pa s in an unsheared dense layer A is ~10⁴ × its transient part, and
 //     an iterate with a wrong acceleration passes (cases/chute/README.md, "False convergence").
 //   "deviation": Σ (|L u − L1 ū| + |s − L1 ū|) + Σ (ε ρ V/dt) U_min, with ū the mean of the
@@ -76,7 +76,7 @@ class MomentumResidual {
   double value(const Sums& total) const;
 
  private:
-  ResidualNormalization m_kind = ResidualNormalization::force;
+  ResidualNormalization m_kind = ResidualNormalization::velocity_scale;
   double m_mean = 0.0, m_velocity_scale = 1.0, m_least_speed = 0.0;
   bool m_net_force = false;
 };

@@ -15,8 +15,6 @@ SolverSettings::SolverSettings(const deck::Deck& deck, const parallel::Domain& d
       max_outer_iterations(deck.numerics.max_outer_iterations),
       anderson_depth(deck.numerics.anderson_depth),
       relax_velocity(deck.numerics.relax_velocity),
-      velocity_relaxation(deck::choice_value(deck::velocity_relaxation_choices,
-                                             deck.numerics.velocity_relaxation, "velocity relaxation")),
       relax_pressure(deck.numerics.relax_pressure),
       simplec(deck::choice_value(deck::coupling_choices, deck.numerics.algorithm, "algorithm") ==
               deck::Coupling::simplec),

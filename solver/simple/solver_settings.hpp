@@ -32,13 +32,12 @@ struct SolverSettings {
 
   double tolerance = 1e-4;  // numerics.tolerance
   int max_outer_iterations = 40;
-  int anderson_depth = 5;  // numerics.anderson_depth: 0 Picard
+  int anderson_depth = 0;  // numerics.anderson_depth: 0 Picard
   double relax_velocity = 0.7;  // α_u
-  deck::VelocityRelaxation velocity_relaxation = deck::VelocityRelaxation::diagonal;
   double relax_pressure = 1.0;  // α_p
   bool simplec = true;
   Limiter limiter = Limiter::superbee;
-  ResidualNormalization residual_normalization = ResidualNormalization::force;
+  ResidualNormalization residual_normalization = ResidualNormalization::velocity_scale;
   bool net_force_residual = false;
   double bulk_viscosity_ratio = 0.0;  // numerics.solids_bulk_viscosity_ratio: λ_s += r μ_s
   deck::ViscosityAverage viscosity_average = deck::ViscosityAverage::arithmetic;

@@ -58,12 +58,6 @@ enum class ViscosityAverage { arithmetic, harmonic };
 inline constexpr std::array<Choice<ViscosityAverage>, 2> viscosity_average_choices{
     {{"arithmetic", ViscosityAverage::arithmetic}, {"harmonic", ViscosityAverage::harmonic}}};
 
-// numerics.velocity_relaxation: what the under-relaxation of a momentum row weighs
-// (solver/simple/velocity_relaxation.hpp).
-enum class VelocityRelaxation { diagonal, local };
-inline constexpr std::array<Choice<VelocityRelaxation>, 2> velocity_relaxation_choices{
-    {{"diagonal", VelocityRelaxation::diagonal}, {"local", VelocityRelaxation::local}}};
-
 // numerics.algorithm: the pressure-velocity coupling (solver/simple/momentum_predictor.cpp).
 enum class Coupling { simplec, simple };
 inline constexpr std::array<Choice<Coupling>, 2> coupling_choices{

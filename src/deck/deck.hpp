@@ -136,17 +136,16 @@ struct Numerics {
   std::string algorithm = "simplec";     // simplec | simple
   std::string convection = "superbee";   // upwind | superbee | muscl | van_leer | minmod
   double tolerance = 1e-4;               // normalized residual for convergence of a step
-  std::string residual_normalization = "force";  // force | velocity-scale | deviation
+  std::string residual_normalization = "velocity-scale";  // velocity-scale | force | deviation
   bool net_force_residual = false;  // also |Σ row residuals| / the phase's weight
   int max_outer_iterations = 40;         // before the step is redone with dt / 2
-  int anderson_depth = 5;                // 0: Picard; m: Anderson mixing over the last m iterates
-  int easy_outer_iterations = 20;        // at or below: the next step grows
+  int anderson_depth = 0;                // 0: Picard; m: Anderson mixing over the last m iterates
+  int easy_outer_iterations = 8;         // at or below: the next step grows
   int hard_outer_iterations = 0;         // above (if > 0): the next step shrinks
   double dt_growth = 1.2;                // factor after an easy step
   double max_courant = 0.5;              // largest |u| dt/δ of either phase
   double vacant_fraction = 1e-8;         // ε_s at or below which Θ = 0 (granular energy equation)
   double relax_velocity = 0.7;           // α_u
-  std::string velocity_relaxation = "diagonal";  // diagonal | local
   bool wall_shear_in_strain_rate = true;  // no-slip walls' shear in the wall cells' γ̇
   std::string viscosity_average = "arithmetic";  // arithmetic | harmonic
   double solids_bulk_viscosity_ratio = 0.0;  // r μ_s added to the closure's λ_s

@@ -338,13 +338,6 @@ const Section<Numerics>& numerics_section() {
                "change of the first dt (cases/fluidized-bed/README.md)."),
       key(&Numerics::relax_velocity, "relax_velocity").unit("-").init().within(0.05, 1.0)
           .doc("Under-relaxation of the momentum equations, α_u."),
-      key(&Numerics::velocity_relaxation, "velocity_relaxation").init()
-          .one_of(choice_names(velocity_relaxation_choices))
-          .doc("What α_u relaxes. diagonal (Patankar's, MFIX's): a row's whole diagonal a_P "
-               "becomes a_P/α_u. local: only the row's own part a_P − Σa_nb (inertia, drag, walls) "
-               "is scaled, a_P + (1/α_u − 1)(a_P − Σa_nb), so a large viscosity, whose links "
-               "cancel for a layer moving as a plug, does not slow the plug's iteration. Neither "
-               "changes a converged step."),
       key(&Numerics::wall_shear_in_strain_rate, "wall_shear_in_strain_rate").init()
           .doc("Whether a stationary no-slip solids wall's shear enters the closure's strain rate "
                "in the cells beside it (ghost value −u_c, as MFIX's ghost cells and the report's "

@@ -126,14 +126,19 @@ bool MomentumPredictor::predict(int d, const Inputs& in, run::FlowState& state,
     const double A_g = g ? g->a + beta_v : 0.0, A_s = s ? s->a + beta_v : 0.0;
     const double R_g = g ? g->b + g->neighbours_u : 0.0, R_s = s ? s->b + s->neighbours_u : 0.0;
 
+    // The row's residual at the current iterate, with the drag on the other phase's velocity.
+    auto add_residual = [&](Phase phase, const MomentumRow& row, double A, double u, double u_other) {
+      const double row_residual = residual[phase].add(
+          phase == gas ? gas_sums : solids_sums,
+          {.diagonal = A, .operator_u = A * u - row.neighbours_u,
+           .operator_one = A - row.neighbours_a, .source = row.b + beta_v * u_other,
+           .transient = row.transient, .weight = weight(phase, row),
+           .force = acting(phase, row, std::abs(beta_v * (u_other - u)))});
+      worst.record((phase == gas ? gas_momentum_x : solids_momentum_x) + d, row_residual, l);
+    };
+
     if (g) {
-      const double drag_force = std::abs(beta_v * (u_s[ul] - u_g[ul]));
-      const double row_residual = residual[gas].add(
-          gas_sums, {.diagonal = A_g, .operator_u = A_g * u_g[ul] - g->neighbours_u,
-                     .operator_one = A_g - g->neighbours_a, .source = g->b + beta_v * u_s[ul],
-                     .transient = g->transient, .weight = weight(gas, *g),
-                     .force = acting(gas, *g, drag_force)});
-      worst.record(gas_momentum_x + d, row_residual, l);
+      add_residual(gas, *g, A_g, u_g[ul], u_s[ul]);
       double diagonal = A_g, rhs = g->b;
       if (s) {
         diagonal -= beta_v * beta_v / A_s;
@@ -156,13 +161,7 @@ bool MomentumPredictor::predict(int d, const Inputs& in, run::FlowState& state,
       const MomentumRow& row = rows[solids][r];
       double diagonal = 1.0, rhs = 0.0;
       if (s) {
-        const double drag_force = std::abs(beta_v * (u_g[ul] - u_s[ul]));
-        const double row_residual = residual[solids].add(
-            solids_sums, {.diagonal = A_s, .operator_u = A_s * u_s[ul] - s->neighbours_u,
-                          .operator_one = A_s - s->neighbours_a, .source = s->b + beta_v * u_g[ul],
-                          .transient = s->transient, .weight = weight(solids, *s),
-                          .force = acting(solids, *s, drag_force)});
-        worst.record(solids_momentum_x + d, row_residual, l);
+        add_residual(solids, *s, A_s, u_s[ul], u_g[ul]);
         diagonal = A_s;
         rhs = s->b;
         if (g) {

@@ -38,9 +38,10 @@
 // ((λ − ⅔ μ)∇·u)_n − ((λ − ⅔ μ)∇·u)_c) A over the fluid cells (∇·u = 0 beyond them, as an
 // outlet's P_s); ε_m ρ_m g_d V; the implicit-Euler term ε_m ρ_m V / dt (u_P − u_P^old); the gas's
 // optional manufactured source. row.force sums the magnitudes of the forces among these that act
-// on the control volume (the weight ε_m ρ_m |g| V, the pressure and P_s forces, the boundary
-// stress a_nb |u_b − u_P| of walls and given velocities, the source), which the "force" residual
-// normalization measures against (momentum_residual.hpp).
+// on the control volume (the weight ε_m ρ_m |g| V, also kept as row.weight, the pressure and P_s
+// forces, the boundary stress a_nb |u_b − u_P| of walls and given velocities, the source, and
+// the floor ε_m ρ_m a_min V), which the "force" residual normalization measures against, with
+// the drag added by the predictor (momentum_residual.hpp).
 #include <algorithm>
 #include <cmath>
 
@@ -216,7 +217,8 @@ void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d
     };
     row.b += (dilatational(n) - dilatational(l)) * row.area;
     row.b += row.fraction * rho * in.settings.gravity[ud] * row.volume;
-    row.force += row.fraction * rho * in.settings.gravity_magnitude * row.volume;  // the weight
+    row.weight = row.fraction * rho * in.settings.gravity_magnitude * row.volume;
+    row.force += row.weight + row.fraction * rho * in.settings.least_acceleration * row.volume;
     if (phase == gas && !in.gas_source[ud].empty()) act(in.gas_source[ud][uc] * row.volume);
     const double a_transient = row.fraction * rho * row.volume / in.dt;
     row.a += a_transient;

@@ -7,7 +7,7 @@
 // is solved for each phase with the other phase's own row eliminated:
 //     (A_g − (βV)²/A_s) u_g = b_g + Σ a_nb u_nb + βV R_s / A_s       (and likewise the solids),
 // so a strong drag couples the phases within the predictor instead of across outer iterations.
-// Then Patankar under-relaxation (diag / α_u, b + (1/α_u − 1) diag u*), and one BiCGStab solve per
+// Then Patankar under-relaxation (diag / α_u, b + (1 − α_u) diag u*), and one BiCGStab solve per
 // phase. Where the solids are below the threshold their velocity is zero (and the gas sees
 // β (0 − u_g)); a frozen solids phase enters with its given velocity.
 //
@@ -101,13 +101,6 @@ bool MomentumPredictor::predict(int d, const Inputs& in, run::FlowState& state,
   }
   auto& gas_sums = sums.momentum[static_cast<std::size_t>(momentum_equation(gas, d))];
   auto& solids_sums = sums.momentum[static_cast<std::size_t>(momentum_equation(solids, d))];
-  auto weight = [&](Phase phase, const MomentumRow& row) {
-    return row.fraction * settings.density[phase] * row.volume * settings.gravity_magnitude;
-  };
-  // The forces that act on a row (momentum_residual.hpp): the assembly's, the drag and the floor.
-  auto acting = [&](Phase phase, const MomentumRow& row, double drag) {
-    return row.force + drag + row.fraction * settings.density[phase] * row.volume * settings.least_acceleration;
-  };
   auto& x = m_x;
   for (auto& v : x) v.resize(numbering.owned_locals.size());
   worst.reset(gas_momentum_x + d);
@@ -132,8 +125,8 @@ bool MomentumPredictor::predict(int d, const Inputs& in, run::FlowState& state,
           phase == gas ? gas_sums : solids_sums,
           {.diagonal = A, .operator_u = A * u - row.neighbours_u,
            .operator_one = A - row.neighbours_a, .source = row.b + beta_v * u_other,
-           .transient = row.transient, .weight = weight(phase, row),
-           .force = acting(phase, row, std::abs(beta_v * (u_other - u)))});
+           .transient = row.transient, .weight = row.weight,
+           .force = row.force + std::abs(beta_v * (u_other - u))});
       worst.record((phase == gas ? gas_momentum_x : solids_momentum_x) + d, row_residual, l);
     };
 
@@ -154,7 +147,7 @@ bool MomentumPredictor::predict(int d, const Inputs& in, run::FlowState& state,
       columns[g->count] = numbering.global[ul];
       values[g->count] = relaxed;
       m_systems[gas][ud]->set_row(numbering.global[ul], columns, values, g->count + 1,
-                                  rhs + (relaxed - diagonal) * u_g[ul]);
+                                  rhs + (1.0 - alpha) * relaxed * u_g[ul]);
       x[gas][r] = u_g[ul];
     }
     if (moves[solids]) {
@@ -168,9 +161,8 @@ bool MomentumPredictor::predict(int d, const Inputs& in, run::FlowState& state,
           diagonal -= beta_v * beta_v / A_g;
           rhs += beta_v * R_g / A_g;
         }
-        const double relaxed = diagonal / alpha;
-        rhs += (relaxed - diagonal) * u_s[ul];
-        diagonal = relaxed;
+        diagonal /= alpha;
+        rhs += (1.0 - alpha) * diagonal * u_s[ul];
       }
       std::int64_t columns[7];
       double values[7];

@@ -18,7 +18,7 @@ namespace bagnold::solver {
 // entries are written before they are read), so refilling a row costs no more than filling it.
 struct MomentumRow {
   void reset() {
-    a = b = neighbours_a = neighbours_u = transient = fraction = area = volume = force = 0.0;
+    a = b = neighbours_a = neighbours_u = transient = fraction = area = volume = weight = force = 0.0;
     active = true;
     count = 0;
   }
@@ -31,7 +31,8 @@ struct MomentumRow {
   double fraction = 0.0;       // ε of the phase at the face velocity
   double area = 0.0;           // face area normal to the velocity
   double volume = 0.0;         // control volume of the face velocity
-  double force = 0.0;          // Σ |force| of weight, pressure, P_s, walls, body force (not drag)
+  double weight = 0.0;         // ε ρ V |g|
+  double force = 0.0;          // Σ |force| of weight, pressure, P_s, walls, body force, floor (not drag)
   bool active = true;          // false: a solids row below the threshold, u_s = 0
   int count = 0;               // off-diagonal entries
   std::int64_t columns[6];

@@ -39,7 +39,7 @@ SolverSettings::SolverSettings(const deck::Deck& deck, const parallel::Domain& d
                                   std::abs(region.solids_velocity[static_cast<std::size_t>(d)])});
   if (reference_speed <= 0.0) reference_speed = 1.0;
   least_speed = 1e-3 * reference_speed;
-  least_acceleration = extent > 0.0 ? 1e-3 * reference_speed * reference_speed / extent : 1e-3;
+  least_acceleration = 1e-3 * reference_speed * reference_speed / extent;
 }
 
 }  // namespace bagnold::solver

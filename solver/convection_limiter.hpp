@@ -34,8 +34,11 @@ inline double limiter(Limiter kind, double r) {
 inline double tvd_correction(Limiter kind, double upwind_upwind, double upwind, double downwind) {
   const double jump = downwind - upwind;
   if (kind == Limiter::upwind || std::abs(jump) < 1e-300) return 0.0;
-  const double r = (upwind - upwind_upwind) / jump;
-  return 0.5 * limiter(kind, r) * jump;
+  // r ≤ 0 (ψ = 0, a local extremum or a flat upwind side) is read from the signs, without the
+  // division.
+  const double slope = upwind - upwind_upwind;
+  if (slope == 0.0 || (slope > 0.0) != (jump > 0.0)) return 0.0;
+  return 0.5 * limiter(kind, slope / jump) * jump;
 }
 
 }  // namespace bagnold::solver

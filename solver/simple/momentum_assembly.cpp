@@ -61,7 +61,8 @@ double mean_viscosity(deck::ViscosityAverage average, double a, double b) {
 
 void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d,
                             const run::FlowState& state, SolidsWallCoefficients* walls,
-                            bool refresh_wall_coefficients, std::vector<MomentumRow>& rows) {
+                            bool refresh_wall_coefficients, std::vector<MomentumRow>& rows,
+                            std::vector<double>& pair_viscosity) {
   const Discretization& disc = in.discretization;
   const auto& layout = disc.layout();
   const auto ud = static_cast<std::size_t>(d);
@@ -79,6 +80,14 @@ void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d
   auto viscosity = [&](int local) { return local >= 0 ? mu[static_cast<std::size_t>(local)] : 0.0; };
   const deck::ViscosityAverage average = in.settings.viscosity_average;
   auto mean = [average](double a, double b) { return mean_viscosity(average, a, b); };
+  // The mean viscosity of each local cell and its + neighbour along d (the cell's own without
+  // one), once per cell: a wall face takes its row's, an edge the mean of two rows' (each row
+  // shares its cells' pair with the rows beside it).
+  pair_viscosity.resize(static_cast<std::size_t>(layout.local_count()));
+  for (int l = 0; l < layout.local_count(); ++l) {
+    const int n = layout.neighbour(l, 2 * d + 1);
+    pair_viscosity[static_cast<std::size_t>(l)] = n >= 0 ? mean(viscosity(l), viscosity(n)) : viscosity(l);
+  }
 
   rows.resize(numbering.owned_locals.size());
   for (std::size_t r = 0; r < numbering.owned_locals.size(); ++r) {
@@ -140,14 +149,12 @@ void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d
                                            refresh_wall_coefficients) * area;
           } else {
             const double wall_distance = 0.5 * disc.width(l, e);
-            diffusion = mean(viscosity(l), viscosity(n)) * area / wall_distance;
+            diffusion = pair_viscosity[static_cast<std::size_t>(l)] * area / wall_distance;
           }
         } else if (link.kind != LinkKind::zero_gradient) {
           // The edge between c, n and their neighbours m, m' across the face.
           const int m = link.local;
-          const int m_plus = layout.neighbour(m, 2 * d + 1);
-          const double edge_mu =
-              mean(mean(viscosity(l), viscosity(n)), m_plus >= 0 ? mean(viscosity(m), viscosity(m_plus)) : viscosity(m));
+          const double edge_mu = mean(pair_viscosity[static_cast<std::size_t>(l)], pair_viscosity[static_cast<std::size_t>(m)]);
           diffusion = edge_mu * area / (0.5 * (disc.width(l, e) + disc.width(m, e)));
           // The transpose's cross part μ ∂_d u_e on this face: ∂_d u_e from uc_e and un_e,
           // δ_d = half_c + half_n apart (so A/δ_d = width along t).

@@ -53,9 +53,11 @@ struct MomentumAssemblyInputs {
 
 // Fills `rows` (one per owned unknown face along d, in row order) for `phase` from the iterate
 // `state`. Partial-slip solids walls take c_w from `walls`, re-evaluated when
-// refresh_wall_coefficients (the step's first outer iteration), else as held.
+// refresh_wall_coefficients (the step's first outer iteration), else as held. pair_viscosity is
+// scratch (sized here).
 void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d,
                             const run::FlowState& state, SolidsWallCoefficients* walls,
-                            bool refresh_wall_coefficients, std::vector<MomentumRow>& rows);
+                            bool refresh_wall_coefficients, std::vector<MomentumRow>& rows,
+                            std::vector<double>& pair_viscosity);
 
 }  // namespace bagnold::solver

@@ -44,7 +44,8 @@ struct Momentum {
     const std::array<std::vector<double>, 3> no_source;
     const solver::MomentumAssemblyInputs in{c.disc, c.settings, c.old, dt, fields, carried, no_source};
     std::vector<solver::MomentumRow> out;
-    solver::assemble_momentum_rows(in, phase, d, c.state, nullptr, true, out);
+    std::vector<double> scratch;
+    solver::assemble_momentum_rows(in, phase, d, c.state, nullptr, true, out, scratch);
     return out;
   }
   bool predict(int d, double velocity_scale) {

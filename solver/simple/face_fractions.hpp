@@ -20,12 +20,34 @@ namespace bagnold::solver {
 // that the solids rows of an empty cell are not solved for a velocity nothing carries.
 inline constexpr double solids_threshold = 1e-6;
 
-double face_fraction(const Discretization& discretization, const run::FlowState& state, Phase phase,
-                     int local, int d);
+// Inline, as solids_present: called for every solids momentum row.
+inline double face_fraction(const Discretization& discretization, const run::FlowState& state,
+                            Phase phase, int local, int d) {
+  const auto& layout = discretization.layout();
+  const auto& eps = phase == gas ? state.gas_fraction : state.solids_fraction;
+  const int n = layout.neighbour(local, 2 * d + 1);
+  if (n < 0) return eps[static_cast<std::size_t>(local)];
+  if (layout.kind(local) == grid::CellKind::boundary || layout.kind(n) == grid::CellKind::boundary) {
+    const auto& velocity = phase == gas ? state.gas_velocity : state.solids_velocity;
+    const double u = velocity[static_cast<std::size_t>(d)][static_cast<std::size_t>(local)];
+    const bool local_is_fluid = layout.kind(local) != grid::CellKind::boundary;
+    const bool from_local = u > 0.0 || (u == 0.0 && local_is_fluid);
+    return eps[static_cast<std::size_t>(from_local ? local : n)];
+  }
+  const double wc = discretization.width(local, d), wn = discretization.width(n, d);
+  return (eps[static_cast<std::size_t>(local)] * wn + eps[static_cast<std::size_t>(n)] * wc) / (wc + wn);
+}
+
 double carried_fraction(const Discretization& discretization, const run::FlowState& state,
                         Phase phase, int local, int d);
 // Whether the solids momentum on the face of `local` along d is solved.
-bool solids_present(const Discretization& discretization, const run::FlowState& state, int local, int d);
+inline bool solids_present(const Discretization& discretization, const run::FlowState& state,
+                           int local, int d) {
+  const int n = discretization.layout().neighbour(local, 2 * d + 1);
+  const auto& eps = state.solids_fraction;
+  return eps[static_cast<std::size_t>(local)] > solids_threshold ||
+         (n >= 0 && eps[static_cast<std::size_t>(n)] > solids_threshold);
+}
 
 // Refreshes carried(phase, d) at every local cell.
 void carry_fractions(const Discretization& discretization, const run::FlowState& state, Phase phase,

@@ -140,18 +140,15 @@ bool MomentumPredictor::predict(int d, const Inputs& in, run::FlowState& state,
         rhs += beta_v * u_s[ul];  // frozen solids, or none here (u_s = 0)
       }
       const double relaxed = diagonal / alpha;
-      std::int64_t columns[7];
-      double values[7];
-      std::copy(g->columns, g->columns + g->count, columns);
-      std::copy(g->values, g->values + g->count, values);
-      columns[g->count] = numbering.global[ul];
-      values[g->count] = relaxed;
-      m_systems[gas][ud]->set_row(numbering.global[ul], columns, values, g->count + 1,
+      MomentumRow& row = rows[gas][r];  // the diagonal goes after the off-diagonal entries
+      row.columns[row.count] = numbering.global[ul];
+      row.values[row.count] = relaxed;
+      m_systems[gas][ud]->set_row(numbering.global[ul], row.columns, row.values, row.count + 1,
                                   rhs + (1.0 - alpha) * relaxed * u_g[ul]);
       x[gas][r] = u_g[ul];
     }
     if (moves[solids]) {
-      const MomentumRow& row = rows[solids][r];
+      MomentumRow& row = rows[solids][r];
       double diagonal = 1.0, rhs = 0.0;
       if (s) {
         add_residual(solids, *s, A_s, u_s[ul], u_g[ul]);
@@ -164,13 +161,9 @@ bool MomentumPredictor::predict(int d, const Inputs& in, run::FlowState& state,
         diagonal /= alpha;
         rhs += (1.0 - alpha) * diagonal * u_s[ul];
       }
-      std::int64_t columns[7];
-      double values[7];
-      std::copy(row.columns, row.columns + row.count, columns);
-      std::copy(row.values, row.values + row.count, values);
-      columns[row.count] = numbering.global[ul];
-      values[row.count] = diagonal;
-      m_systems[solids][ud]->set_row(numbering.global[ul], columns, values, row.count + 1, rhs);
+      row.columns[row.count] = numbering.global[ul];
+      row.values[row.count] = diagonal;
+      m_systems[solids][ud]->set_row(numbering.global[ul], row.columns, row.values, row.count + 1, rhs);
       x[solids][r] = s ? u_s[ul] : 0.0;
     }
 

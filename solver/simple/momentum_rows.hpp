@@ -35,8 +35,8 @@ struct MomentumRow {
   double force = 0.0;          // Σ |force| of weight, pressure, P_s, walls, body force, floor (not drag)
   bool active = true;          // false: a solids row below the threshold, u_s = 0
   int count = 0;               // off-diagonal entries
-  std::int64_t columns[6];
-  double values[6];            // −a_nb
+  std::int64_t columns[7];     // the off-diagonal entries' columns, then room for the diagonal's
+  double values[7];            // −a_nb, then the predictor's diagonal
 };
 
 // What the assembly reads besides the iterate.

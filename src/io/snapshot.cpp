@@ -8,6 +8,7 @@
 
 #include "src/io/agree.hpp"
 #include "src/io/disk_reservation.hpp"
+#include "src/io/failed_file.hpp"
 #include "src/io/hdf5_handle.hpp"
 #include "src/io/hdf5_read.hpp"
 #include "src/io/root_gather.hpp"
@@ -397,9 +398,11 @@ void write_snapshot(const std::string& path, const parallel::Layout& layout,
   const hsize_t boundary_elements = std::max<hsize_t>(boundary_naturals.size(), 1);
   const RootGather fluid(comm, placement.fluid_elements, product(dims));
   const RootGather boundary(comm, placement.boundary_elements, boundary_elements);
-  File file;
+  File file;  // rank 0's
+  bool created = false;  // on every rank: whether rank 0 has the file open
   try {
     step([&] { file = create_file(temporary); });
+    created = true;
     step([&] {
       if (reserve > 0) reserve_disk_space(temporary, reserve);
     });
@@ -462,10 +465,8 @@ void write_snapshot(const std::string& path, const parallel::Layout& layout,
   } catch (const Hdf5Error& e) {
     // Every rank is here (each step is agreed on). The final name is never touched: earlier
     // snapshots stay as they were.
-    if (comm.is_root()) {
-      file.reset();  // CLOSE_FAILED_PLACEHOLDER
-      std::remove(temporary.c_str());
-    }
+    if (comm.is_root()) std::remove(temporary.c_str());
+    if (created) leave_failed_file_open(file.release());
     throw Hdf5Error("cannot write the snapshot " + path + " (" + e.what() + "; disk full?)");
   }
   agree(comm, [&] {

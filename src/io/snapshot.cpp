@@ -126,8 +126,7 @@ long read_long_attribute(hid_t object, const char* name) {
 
 // A dataset of the given shape with `fill` as its declared fill value. The writer writes every
 // element itself (`fill` where no rank owns one), so HDF5 is told never to write the fill; the
-// space is allocated at creation. (The properties are stored in the file, the same in every
-// snapshot written since fills existed.)
+// space is allocated at creation. These creation properties are part of the file's format.
 Dataset create_dataset(hid_t parent, const std::string& name, hid_t type,
                        const std::vector<hsize_t>& dims, const void* fill) {
   Dataspace space(check(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr),
@@ -208,7 +207,7 @@ std::vector<double> values_at(std::span<const double> values, const std::vector<
   return out;
 }
 
-// A whole array of doubles as the dataset NAME (rank 0), with its checksum (snapshot_check.hpp).
+// The whole of dataset `ds` from `whole`, and its checksum (snapshot_check.hpp).
 void write_array(const Dataset& ds, const std::vector<double>& whole) {
   check_status(H5Dwrite(ds.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, whole.data()),
                "H5Dwrite");
@@ -393,8 +392,7 @@ void write_snapshot(const std::string& path, const parallel::Layout& layout,
   const auto boundary_naturals = all_boundary_naturals(flags);
   const Placement placement = place_cells(layout, layout.owned_count(), boundary_naturals, path);
   const auto dims = domain_dims(g);
-  // An empty boundary list is written as one element (the fill), as HDF5 has no empty datasets
-  // of this kind here.
+  // A snapshot without boundary cells stores one element in each boundary dataset (the fill).
   const hsize_t boundary_elements = std::max<hsize_t>(boundary_naturals.size(), 1);
   const RootGather fluid(comm, placement.fluid_elements, product(dims));
   const RootGather boundary(comm, placement.boundary_elements, boundary_elements);

@@ -55,7 +55,9 @@ TEST(RootGather, ARankWithoutPointsTakesPart) {
   const io::RootGather gather(comm, points, 2);
   const std::vector<double> values(points.size(), 7.0);
   const auto whole = gather.gather(values, 1, 0.0);
-  if (comm.is_root()) EXPECT_EQ(whole, (std::vector<double>{7.0, 7.0}));
+  if (comm.is_root()) {
+    EXPECT_EQ(whole, (std::vector<double>{7.0, 7.0}));
+  }
 }
 
 }  // namespace

@@ -124,17 +124,18 @@ long read_long_attribute(hid_t object, const char* name) {
   return value;
 }
 
-// A dataset of the given shape with `fill` as its declared fill value. The writer writes every
-// element itself (`fill` where no rank owns one), so HDF5 is told never to write the fill; the
-// space is allocated at creation. These creation properties are part of the file's format.
+// A dataset of the given shape, with `fill` (if any) as its declared fill value. The writer
+// writes every element itself (`fill` where no rank owns one), so HDF5 is told never to write the
+// fill. The space is allocated at creation, as parallel HDF5 requires: these creation properties
+// are stored in the file, and a snapshot's are the same whichever driver wrote it.
 Dataset create_dataset(hid_t parent, const std::string& name, hid_t type,
                        const std::vector<hsize_t>& dims, const void* fill) {
   Dataspace space(check(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr),
                         "H5Screate_simple"));
   PropertyList create(check(H5Pcreate(H5P_DATASET_CREATE), "H5Pcreate(dataset)"));
+  check_status(H5Pset_alloc_time(create.get(), H5D_ALLOC_TIME_EARLY), "H5Pset_alloc_time");
   if (fill) {
     check_status(H5Pset_fill_value(create.get(), type, fill), "H5Pset_fill_value");
-    check_status(H5Pset_alloc_time(create.get(), H5D_ALLOC_TIME_EARLY), "H5Pset_alloc_time");
     check_status(H5Pset_fill_time(create.get(), H5D_FILL_TIME_NEVER), "H5Pset_fill_time");
   }
   return Dataset(check(H5Dcreate2(parent, name.c_str(), type, space.get(), H5P_DEFAULT,

@@ -1,7 +1,6 @@
 #pragma once
 // Room on disk reserved for a file before it is written, so that a disk filling from elsewhere
-// cannot make the write fail halfway: a parallel HDF5 1.10 write that fails inside the library's
-// own collective calls (its metadata flush) can leave ranks waiting for one another for good.
+// stops the run before the file is written rather than halfway through it.
 // The reservation lies beyond the file's end (fallocate with FALLOC_FL_KEEP_SIZE), so the file
 // grows into it as it is written; `release_unused_reservation` gives back what the file did not
 // use. On a file system without fallocate the reservation is skipped.

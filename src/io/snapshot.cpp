@@ -10,6 +10,8 @@
 #include "src/io/disk_reservation.hpp"
 #include "src/io/failed_file.hpp"
 #include "src/io/hdf5_handle.hpp"
+#include "src/io/hdf5_read.hpp"
+#include "src/io/root_gather.hpp"
 #include "src/io/snapshot_check.hpp"
 #include "src/util/build_info.hpp"
 
@@ -19,39 +21,30 @@ namespace {
 
 constexpr int format_version = 1;
 
-// One step of a parallel write, run on every rank and agreed on (agree.hpp) before any rank goes
-// on: a full disk fails the write of whichever rank reaches it (HDF5's metadata is written by
-// rank 0 alone), and a rank that has failed must not be waited for in the next collective call.
-// Each step holds at most one HDF5 call that communicates between the ranks (a collective
-// transfer, a dataset created with its fill written, the flush), and it comes first: a rank
-// whose call failed skips only calls that are its own.
-class Steps {
+// Rank 0 writes the snapshot alone, with HDF5's default (serial) driver, from the values every
+// rank sends it (root_gather.hpp): no HDF5 call of the write involves another rank, so a failure
+// anywhere inside HDF5 (a full disk, in the data or in its metadata flush) cannot leave the ranks
+// in different collective calls. Each step runs on rank 0, and its outcome is agreed on by every
+// rank (agree.hpp) before any rank goes on to the next gather.
+class RootSteps {
  public:
-  explicit Steps(const parallel::Communicator& comm) : m_comm(comm) {}
-  void operator()(const std::function<void()>& step) const { agree(m_comm, step); }
+  explicit RootSteps(const parallel::Communicator& comm) : m_comm(comm) {}
+  void operator()(const std::function<void()>& step) const {
+    agree(m_comm, [&] {
+      if (m_comm.is_root()) step();
+    });
+  }
 
  private:
   const parallel::Communicator& m_comm;
 };
 
-File open_parallel(const std::string& path, MPI_Comm comm, bool create) {
+File create_file(const std::string& path) {
   // Errors are reported by exceptions with a message; HDF5's own stack dump would only add noise.
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  PropertyList access(check(H5Pcreate(H5P_FILE_ACCESS), "H5Pcreate(file access)"));
-  check_status(H5Pset_fapl_mpio(access.get(), comm, MPI_INFO_NULL), "H5Pset_fapl_mpio");
-  if (create) {
-    // Rank 0 writes all the metadata. With HDF5 1.10's default (the ranks share the metadata
-    // writes), a write that fails makes its rank skip the barrier that ends the flush, and the
-    // others wait there for good; with rank 0 alone, HDF5 reports the failure after the barrier.
-    H5AC_cache_config_t cache;
-    cache.version = H5AC__CURR_CACHE_CONFIG_VERSION;
-    check_status(H5Pget_mdc_config(access.get(), &cache), "H5Pget_mdc_config");
-    cache.metadata_write_strategy = H5AC_METADATA_WRITE_STRATEGY__PROCESS_0_ONLY;
-    check_status(H5Pset_mdc_config(access.get(), &cache), "H5Pset_mdc_config");
-  }
-  if (create)
-    return File(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.get()));
-  return File(H5Fopen(path.c_str(), H5F_ACC_RDONLY, access.get()));
+  File file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT));
+  if (file.get() < 0) throw Hdf5Error("cannot create snapshot file " + path);
+  return file;
 }
 
 void write_attribute(hid_t object, const char* name, double value) {
@@ -131,64 +124,49 @@ long read_long_attribute(hid_t object, const char* name) {
   return value;
 }
 
-// A dataset of the given shape with `fill` as its declared fill value. HDF5 never writes the
-// fill: the writer writes every element itself (rank 0 the elements no rank owns). In parallel
-// HDF5 1.10 a fill written at creation is written by rank 0 alone, followed by a barrier that
-// rank 0 skips when its write fails (a full disk), and the other ranks then wait there for good.
+// A dataset of the given shape, with `fill` (if any) as its declared fill value. The writer
+// writes every element itself (`fill` where no rank owns one), so HDF5 is told never to write the
+// fill. The space is allocated at creation, as parallel HDF5 requires: these creation properties
+// are stored in the file, and a snapshot's are the same whichever driver wrote it.
 Dataset create_dataset(hid_t parent, const std::string& name, hid_t type,
                        const std::vector<hsize_t>& dims, const void* fill) {
   Dataspace space(check(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr),
                         "H5Screate_simple"));
   PropertyList create(check(H5Pcreate(H5P_DATASET_CREATE), "H5Pcreate(dataset)"));
+  check_status(H5Pset_alloc_time(create.get(), H5D_ALLOC_TIME_EARLY), "H5Pset_alloc_time");
   if (fill) {
     check_status(H5Pset_fill_value(create.get(), type, fill), "H5Pset_fill_value");
-    check_status(H5Pset_alloc_time(create.get(), H5D_ALLOC_TIME_EARLY), "H5Pset_alloc_time");
     check_status(H5Pset_fill_time(create.get(), H5D_FILL_TIME_NEVER), "H5Pset_fill_time");
   }
   return Dataset(check(H5Dcreate2(parent, name.c_str(), type, space.get(), H5P_DEFAULT,
                                   create.get(), H5P_DEFAULT), ("H5Dcreate " + name).c_str()));
 }
 
-// Writes (or reads) values at scattered points; collective transfer, ranks with no points
-// select none.
-void transfer_points(hid_t dataset, hid_t type, const std::vector<hsize_t>& coordinates, int rank,
-                     void* buffer, bool write) {
-  Dataspace file_space(check(H5Dget_space(dataset), "H5Dget_space"));
-  const hsize_t count = coordinates.size() / static_cast<std::size_t>(rank);
-  if (count > 0) {
-    check_status(H5Sselect_elements(file_space.get(), H5S_SELECT_SET, count, coordinates.data()),
-                 "H5Sselect_elements");
-  } else {
-    check_status(H5Sselect_none(file_space.get()), "H5Sselect_none");
-  }
-  const hsize_t memory_count = std::max<hsize_t>(count, 1);
-  Dataspace memory_space(check(H5Screate_simple(1, &memory_count, nullptr), "H5Screate_simple"));
-  if (count == 0) check_status(H5Sselect_none(memory_space.get()), "H5Sselect_none");
-  PropertyList transfer(check(H5Pcreate(H5P_DATASET_XFER), "H5Pcreate(xfer)"));
-  check_status(H5Pset_dxpl_mpio(transfer.get(), H5FD_MPIO_COLLECTIVE), "H5Pset_dxpl_mpio");
-  double dummy = 0;
-  void* data = count > 0 ? buffer : &dummy;
-  if (write) {
-    check_status(H5Dwrite(dataset, type, memory_space.get(), file_space.get(), transfer.get(), data),
-                 "H5Dwrite");
-  } else {
-    check_status(H5Dread(dataset, type, memory_space.get(), file_space.get(), transfer.get(), data),
-                 "H5Dread");
-  }
+std::vector<hsize_t> domain_dims(const grid::StructuredGrid& g) {
+  return {static_cast<hsize_t>(g.cells(2)), static_cast<hsize_t>(g.cells(1)),
+          static_cast<hsize_t>(g.cells(0))};
 }
 
-// Which owned cells go where: fluid cells to (k, j, i) of the 3-D arrays, boundary cells to
-// their ordinal among all boundary cells in natural order. For writing, rank 0 also has the
-// elements no rank owns (the box's cells that are not fluid; the one element of an empty
-// boundary list), which it writes as the fill (create_dataset says why HDF5 does not).
+// The element of cell (i, j, k) in a (nz, ny, nx) array, row-major.
+std::uint64_t domain_element(const grid::StructuredGrid& g, const grid::Index3& ijk) {
+  return (static_cast<std::uint64_t>(ijk[2]) * static_cast<std::uint64_t>(g.cells(1)) +
+          static_cast<std::uint64_t>(ijk[1])) * static_cast<std::uint64_t>(g.cells(0)) +
+         static_cast<std::uint64_t>(ijk[0]);
+}
+
+std::uint64_t product(const std::vector<hsize_t>& dims) {
+  std::uint64_t n = 1;
+  for (const auto d : dims) n *= d;
+  return n;
+}
+
+// Which cells go where: fluid cells to their element of the (nz, ny, nx) arrays, boundary cells
+// to their ordinal in the snapshot's list of boundary cells (natural order).
 struct Placement {
   std::vector<int> fluid_locals;
-  std::vector<hsize_t> fluid_coordinates;  // 3 per point
+  std::vector<std::uint64_t> fluid_elements;
   std::vector<int> boundary_locals;
-  std::vector<hsize_t> boundary_coordinates;  // 1 per point
-  std::vector<std::int64_t> boundary_naturals;  // all boundary cells, natural order
-  std::vector<hsize_t> unowned_coordinates;  // 3 per point
-  std::vector<hsize_t> unowned_boundary;     // 1 per point
+  std::vector<std::uint64_t> boundary_elements;
 };
 
 std::vector<std::int64_t> all_boundary_naturals(const grid::CellFlags& flags) {
@@ -199,79 +177,57 @@ std::vector<std::int64_t> all_boundary_naturals(const grid::CellFlags& flags) {
   return out;
 }
 
-void add_fluid_point(Placement& p, const grid::Index3& ijk, int local) {
-  p.fluid_locals.push_back(local);
-  p.fluid_coordinates.push_back(static_cast<hsize_t>(ijk[2]));
-  p.fluid_coordinates.push_back(static_cast<hsize_t>(ijk[1]));
-  p.fluid_coordinates.push_back(static_cast<hsize_t>(ijk[0]));
-}
-
-void add_boundary_point(Placement& p, std::int64_t natural, int local) {
-  const auto it = std::lower_bound(p.boundary_naturals.begin(), p.boundary_naturals.end(), natural);
-  p.boundary_locals.push_back(local);
-  p.boundary_coordinates.push_back(static_cast<hsize_t>(it - p.boundary_naturals.begin()));
-}
-
-// Owned cells (for writing) or every local cell (for reading).
-Placement place_cells(const parallel::Layout& layout, const grid::CellFlags& flags, bool all_local) {
+// The first `count` local cells (the owned ones, for writing; all, halo included, for reading).
+// Throws when a boundary cell is not in `boundary_naturals` (a snapshot of other geometry).
+Placement place_cells(const parallel::Layout& layout, int count,
+                      const std::vector<std::int64_t>& boundary_naturals, const std::string& path) {
   Placement p;
-  p.boundary_naturals = all_boundary_naturals(flags);
-  const int end = all_local ? layout.local_count() : layout.owned_count();
-  for (int l = 0; l < end; ++l) {
+  for (int l = 0; l < count; ++l) {
     if (layout.kind(l) == grid::CellKind::fluid) {
-      add_fluid_point(p, layout.index3(l), l);
-    } else {
-      add_boundary_point(p, layout.natural(l), l);
+      p.fluid_locals.push_back(l);
+      p.fluid_elements.push_back(domain_element(layout.grid(), layout.index3(l)));
+      continue;
     }
+    const auto it = std::lower_bound(boundary_naturals.begin(), boundary_naturals.end(), layout.natural(l));
+    if (it == boundary_naturals.end() || *it != layout.natural(l))
+      throw Hdf5Error("snapshot " + path + " has different geometry: a boundary cell of this "
+                      "deck is not a boundary cell in the file");
+    p.boundary_locals.push_back(l);
+    p.boundary_elements.push_back(static_cast<std::uint64_t>(it - boundary_naturals.begin()));
   }
-  if (all_local || !layout.comm().is_root()) return p;
-  const auto& g = layout.grid();
-  for (int k = 0; k < g.cells(2); ++k)
-    for (int j = 0; j < g.cells(1); ++j)
-      for (int i = 0; i < g.cells(0); ++i)
-        if (flags.kind[static_cast<std::size_t>(g.natural({i, j, k}))] != grid::CellKind::fluid)
-          p.unowned_coordinates.insert(p.unowned_coordinates.end(),
-                                       {static_cast<hsize_t>(k), static_cast<hsize_t>(j),
-                                        static_cast<hsize_t>(i)});
-  if (p.boundary_naturals.empty()) p.unowned_boundary.push_back(0);
   return p;
 }
 
-// The points a rank writes a dataset at: its own, then (rank 0) those no rank owns, where it
-// writes the fill.
-std::vector<hsize_t> with_unowned(std::vector<hsize_t> coordinates, const std::vector<hsize_t>& unowned) {
-  coordinates.insert(coordinates.end(), unowned.begin(), unowned.end());
-  return coordinates;
+// `width` values per listed local cell, in the order listed.
+std::vector<double> values_at(std::span<const double> values, const std::vector<int>& locals, int width) {
+  const auto w = static_cast<std::size_t>(width);
+  std::vector<double> out;
+  out.reserve(locals.size() * w);
+  for (const int l : locals)
+    for (std::size_t c = 0; c < w; ++c) out.push_back(values[static_cast<std::size_t>(l) * w + c]);
+  return out;
 }
 
-std::vector<hsize_t> domain_dims(const grid::StructuredGrid& g) {
-  return {static_cast<hsize_t>(g.cells(2)), static_cast<hsize_t>(g.cells(1)),
-          static_cast<hsize_t>(g.cells(0))};
+// The whole of dataset `ds` from `whole`, and its checksum (snapshot_check.hpp).
+void write_array(const Dataset& ds, const std::vector<double>& whole) {
+  check_status(H5Dwrite(ds.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, whole.data()),
+               "H5Dwrite");
+  write_checksum_attribute(ds.get(), checksum(whole));
 }
 
-void write_grid(hid_t file, const parallel::Layout& layout, const grid::CellFlags& flags,
-                const Steps& step) {
-  const auto& g = layout.grid();
-  const bool root = layout.comm().is_root();
-  Group group;
+void write_grid(hid_t file, const grid::StructuredGrid& g, const grid::CellFlags& flags,
+                const RootSteps& step) {
   step([&] {
-    group = Group(check(H5Gcreate2(file, "grid", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), "H5Gcreate grid"));
-  });
-  const char* names[] = {"x_faces", "y_faces", "z_faces"};
-  for (int d = 0; d < 3; ++d) {
-    const auto& faces = g.axis(d).faces();
-    // Small datasets: rank 0 writes them whole (independent transfer).
-    step([&] {
+    Group group(check(H5Gcreate2(file, "grid", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), "H5Gcreate grid"));
+    const char* names[] = {"x_faces", "y_faces", "z_faces"};
+    for (int d = 0; d < 3; ++d) {
+      const auto& faces = g.axis(d).faces();
       Dataset ds = create_dataset(group.get(), names[d], H5T_NATIVE_DOUBLE, {faces.size()}, nullptr);
-      if (root)
-        check_status(H5Dwrite(ds.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, faces.data()),
-                     "H5Dwrite faces");
-    });
-  }
-  const std::uint8_t blocked = 0;
-  step([&] {
+      check_status(H5Dwrite(ds.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, faces.data()),
+                   "H5Dwrite faces");
+    }
+    const std::uint8_t blocked = 0;
     Dataset ds = create_dataset(group.get(), "cell_flags", H5T_NATIVE_UINT8, domain_dims(g), &blocked);
-    if (!root) return;
     std::vector<std::uint8_t> domain;
     domain.reserve(static_cast<std::size_t>(g.domain_cell_count()));
     for (int k = 0; k < g.cells(2); ++k)
@@ -284,77 +240,41 @@ void write_grid(hid_t file, const parallel::Layout& layout, const grid::CellFlag
   });
 }
 
-// The cell vectors, /fields/NAME of shape (nz, ny, nx, 3): this rank's fluid cells, NaN elsewhere,
-// each with its checksum (component fastest in the element index).
-void write_cell_vectors(hid_t field_group, const parallel::Layout& layout, const Placement& placement,
-                        const std::vector<CellVectorView>& vectors, const Steps& step) {
-  if (vectors.empty()) return;
-  auto dims = domain_dims(layout.grid());
+// The cell vectors, /fields/NAME of shape (nz, ny, nx, 3): the fluid cells' values, NaN
+// elsewhere, each with its checksum (component fastest in the element index).
+void write_cell_vectors(hid_t field_group, const grid::StructuredGrid& g, const Placement& placement,
+                        const RootGather& fluid, const std::vector<CellVectorView>& vectors,
+                        const RootSteps& step) {
+  auto dims = domain_dims(g);
   dims.push_back(3);
   const double fill = std::numeric_limits<double>::quiet_NaN();
-  const std::size_t points = placement.fluid_locals.size();
-  std::vector<hsize_t> coordinates;
-  coordinates.reserve(12 * points);
-  const auto cells = with_unowned(placement.fluid_coordinates, placement.unowned_coordinates);
-  for (std::size_t p = 0; p < cells.size() / 3; ++p)
-    for (hsize_t c = 0; c < 3; ++c) {
-      const hsize_t* at = &cells[3 * p];
-      coordinates.insert(coordinates.end(), {at[0], at[1], at[2], c});
-    }
-  std::vector<std::uint64_t> checksums(vectors.size(), 0);
-  std::vector<std::vector<double>> buffers(vectors.size());
-  for (std::size_t v = 0; v < vectors.size(); ++v) {
-    auto& buffer = buffers[v];
-    buffer.reserve(3 * points);
-    for (std::size_t p = 0; p < points; ++p) {
-      const auto l = static_cast<std::size_t>(placement.fluid_locals[p]);
-      const hsize_t* at = &placement.fluid_coordinates[3 * p];
-      for (std::size_t c = 0; c < 3; ++c) {
-        const double value = vectors[v].values[3 * l + c];
-        const std::uint64_t e = ((at[0] * dims[1] + at[1]) * dims[2] + at[2]) * 3 + c;
-        checksums[v] += element_hash(e, value) - element_hash(e, fill);
-        buffer.push_back(value);
-      }
-    }
-    buffer.resize(coordinates.size() / 4, fill);
-  }
-  MPI_Allreduce(MPI_IN_PLACE, checksums.data(), static_cast<int>(checksums.size()), MPI_UINT64_T,
-                MPI_SUM, layout.comm().get());
-  const std::uint64_t base = uniform_checksum(dims[0] * dims[1] * dims[2] * 3, fill);
-  for (std::size_t v = 0; v < vectors.size(); ++v) {
-    Dataset ds;
+  for (const auto& vector : vectors) {
+    const auto whole = fluid.gather(values_at(vector.values, placement.fluid_locals, 3), 3, fill);
     step([&] {
-      ds = create_dataset(field_group, vectors[v].name, H5T_NATIVE_DOUBLE, dims, &fill);
+      Dataset ds = create_dataset(field_group, vector.name, H5T_NATIVE_DOUBLE, dims, &fill);
       write_utf8_attribute(ds.get(), "centering", centering_name(Centering::cell));
-      if (!vectors[v].units.empty()) write_utf8_attribute(ds.get(), "units", vectors[v].units);
-    });
-    step([&] {
-      transfer_points(ds.get(), H5T_NATIVE_DOUBLE, coordinates, 4, buffers[v].data(), true);
-      write_checksum_attribute(ds.get(), base + checksums[v]);
+      if (!vector.units.empty()) write_utf8_attribute(ds.get(), "units", vector.units);
+      write_array(ds, whole);
     });
   }
 }
 
-// The opening faces, /openings: their geometry (rank 0 writes it whole: it is the same on every
-// rank) and each field's values on the faces each rank owns, with a checksum.
+// The opening faces, /openings: their geometry (the same on every rank: rank 0 writes its own)
+// and each field's values on the faces, gathered from the ranks that own them, with a checksum.
 void write_openings(hid_t file, const parallel::Communicator& comm, const OpeningsView& openings,
-                    const Steps& step) {
+                    const RootSteps& step) {
   const auto& faces = openings.faces;
   if (faces.empty()) return;
   const hsize_t n = faces.size();
   Group group;
-  Dataset points, quads, region;
   step([&] {
     group = Group(check(H5Gcreate2(file, "openings", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
                         "H5Gcreate openings"));
     write_utf8_array_attribute(group.get(), "region_names", openings.region_names);
-    points = create_dataset(group.get(), "points", H5T_NATIVE_DOUBLE, {4 * n, 3}, nullptr);
+    Dataset points = create_dataset(group.get(), "points", H5T_NATIVE_DOUBLE, {4 * n, 3}, nullptr);
     write_utf8_attribute(points.get(), "units", "m");
-    quads = create_dataset(group.get(), "quads", H5T_NATIVE_INT32, {n, 4}, nullptr);
-    region = create_dataset(group.get(), "region", H5T_NATIVE_INT32, {n}, nullptr);
-  });
-  step([&] {
-    if (!comm.is_root()) return;
+    Dataset quads = create_dataset(group.get(), "quads", H5T_NATIVE_INT32, {n, 4}, nullptr);
+    Dataset region = create_dataset(group.get(), "region", H5T_NATIVE_INT32, {n}, nullptr);
     std::vector<double> xyz;
     std::vector<std::int32_t> corners, regions;
     for (std::size_t f = 0; f < faces.size(); ++f) {
@@ -369,46 +289,19 @@ void write_openings(hid_t file, const parallel::Communicator& comm, const Openin
     check_status(H5Dwrite(region.get(), H5T_NATIVE_INT32, H5S_ALL, H5S_ALL, H5P_DEFAULT, regions.data()),
                  "H5Dwrite openings/region");
   });
+  const RootGather owned(comm, {openings.owned.begin(), openings.owned.end()}, n);
   const double fill = std::numeric_limits<double>::quiet_NaN();
-  std::vector<std::uint64_t> checksums(openings.fields.size(), 0);
-  for (std::size_t v = 0; v < openings.fields.size(); ++v) {
-    const auto& field = openings.fields[v];
-    const auto width = static_cast<std::size_t>(field.width);
-    for (std::size_t p = 0; p < openings.owned.size(); ++p)
-      for (std::size_t c = 0; c < width; ++c) {
-        const std::uint64_t e = openings.owned[p] * width + c;
-        checksums[v] += element_hash(e, field.values[p * width + c]) - element_hash(e, fill);
-      }
-  }
-  MPI_Allreduce(MPI_IN_PLACE, checksums.data(), static_cast<int>(checksums.size()), MPI_UINT64_T,
-                MPI_SUM, comm.get());
-  for (std::size_t v = 0; v < openings.fields.size(); ++v) {
-    const auto& field = openings.fields[v];
-    const auto width = static_cast<hsize_t>(field.width);
-    const bool scalar = width == 1;
+  for (const auto& field : openings.fields) {
+    const auto whole = owned.gather(field.values, field.width, fill);
     std::vector<hsize_t> dims = {n};
-    if (!scalar) dims.push_back(width);
-    std::vector<hsize_t> coordinates;
-    for (const std::size_t f : openings.owned)
-      for (hsize_t c = 0; c < width; ++c) {
-        coordinates.push_back(f);
-        if (!scalar) coordinates.push_back(c);
-      }
-    Dataset ds;
+    if (field.width != 1) dims.push_back(static_cast<hsize_t>(field.width));
     step([&] {
-      ds = create_dataset(group.get(), field.name, H5T_NATIVE_DOUBLE, dims, &fill);
+      Dataset ds = create_dataset(group.get(), field.name, H5T_NATIVE_DOUBLE, dims, &fill);
       if (!field.units.empty()) write_utf8_attribute(ds.get(), "units", field.units);
-    });
-    step([&] {
-      transfer_points(ds.get(), H5T_NATIVE_DOUBLE, coordinates, scalar ? 1 : 2,
-                      const_cast<double*>(field.values.data()), true);
-      write_checksum_attribute(ds.get(), uniform_checksum(n * width, fill) + checksums[v]);
+      write_array(ds, whole);
     });
   }
 }
-
-// After an agreed failure: the file is left open (failed_file.hpp says why).
-void abandon_after_failed_write(File& file) { leave_failed_file_open(file.release()); }
 
 // Whether the open snapshot has the dataset /fields/NAME.
 bool has_field(hid_t file, const std::string& name) {
@@ -419,9 +312,7 @@ bool has_field(hid_t file, const std::string& name) {
 }  // namespace
 
 SnapshotHeader read_snapshot_header(const std::string& path, const std::vector<std::string>& names) {
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  File file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT));
-  if (file.get() < 0) throw Hdf5Error("cannot open snapshot " + path);
+  File file = open_snapshot_readonly(path);
   SnapshotHeader header;
   header.time = read_double_attribute(file.get(), "time");
   for (const auto& name : names)
@@ -436,9 +327,7 @@ SnapshotHeader read_snapshot_header(const std::string& path, const std::vector<s
 }
 
 std::optional<std::string> read_text_attribute(const std::string& path, const std::string& name) {
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  File file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT));
-  if (file.get() < 0) throw Hdf5Error("cannot open snapshot " + path);
+  File file = open_snapshot_readonly(path);
   if (H5Aexists(file.get(), name.c_str()) <= 0) return std::nullopt;
   Attribute a(check(H5Aopen(file.get(), name.c_str(), H5P_DEFAULT), name.c_str()));
   Datatype stored(check(H5Aget_type(a.get()), "H5Aget_type"));
@@ -493,21 +382,28 @@ std::uintmax_t snapshot_size_estimate(const parallel::Layout& layout, const grid
          faces * 8 + attributes + (opening_faces > 0 ? openings : 0) + 2048 * datasets + 4096;
 }
 
+
 void write_snapshot(const std::string& path, const parallel::Layout& layout,
                     const grid::CellFlags& flags, const std::vector<FieldView>& fields,
                     const SnapshotInfo& info, const ViewingData& viewing, std::uintmax_t reserve) {
   const std::string temporary = path + ".tmp";
   const auto& comm = layout.comm();
-  const Steps step(comm);
-  const Placement placement = place_cells(layout, flags, false);
-  File file;
+  const auto& g = layout.grid();
+  const RootSteps step(comm);
+  const auto boundary_naturals = all_boundary_naturals(flags);
+  const Placement placement = place_cells(layout, layout.owned_count(), boundary_naturals, path);
+  const auto dims = domain_dims(g);
+  // A snapshot without boundary cells stores one element in each boundary dataset (the fill).
+  const hsize_t boundary_elements = std::max<hsize_t>(boundary_naturals.size(), 1);
+  const RootGather fluid(comm, placement.fluid_elements, product(dims));
+  const RootGather boundary(comm, placement.boundary_elements, boundary_elements);
+  File file;  // rank 0's
+  bool created = false;  // on every rank: whether rank 0 has the file open
   try {
+    step([&] { file = create_file(temporary); });
+    created = true;
     step([&] {
-      file = open_parallel(temporary, comm.get(), true);
-      if (file.get() < 0) throw Hdf5Error("cannot create snapshot file " + temporary);
-    });
-    step([&] {
-      if (comm.is_root() && reserve > 0) reserve_disk_space(temporary, reserve);
+      if (reserve > 0) reserve_disk_space(temporary, reserve);
     });
     step([&] {
       write_attribute(file.get(), "time", info.time);
@@ -526,75 +422,38 @@ void write_snapshot(const std::string& path, const parallel::Layout& layout,
           write_attribute(file.get(), r.name.c_str(), std::get<long>(r.value));
       }
     });
-    write_grid(file.get(), layout, flags, step);
+    write_grid(file.get(), g, flags, step);
 
     Group field_group, boundary_group;
-    const hsize_t boundary_total = placement.boundary_naturals.size();
     step([&] {
       field_group = Group(check(H5Gcreate2(file.get(), "fields", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
                                 "H5Gcreate fields"));
       boundary_group = Group(check(H5Gcreate2(file.get(), "boundary", H5P_DEFAULT, H5P_DEFAULT,
                                               H5P_DEFAULT), "H5Gcreate boundary"));
       Dataset ds = create_dataset(boundary_group.get(), "natural", H5T_NATIVE_INT64,
-                                  {std::max<hsize_t>(boundary_total, 1)}, nullptr);
-      if (comm.is_root() && boundary_total > 0)
+                                  {boundary_elements}, nullptr);
+      if (!boundary_naturals.empty())
         check_status(H5Dwrite(ds.get(), H5T_NATIVE_INT64, H5S_ALL, H5S_ALL, H5P_DEFAULT,
-                              placement.boundary_naturals.data()), "H5Dwrite natural");
+                              boundary_naturals.data()), "H5Dwrite natural");
     });
     const double fill = std::numeric_limits<double>::quiet_NaN();
-    // Each dataset's checksum (snapshot_check.hpp): this rank's points, summed over the ranks.
-    const auto dims = domain_dims(layout.grid());
-    const std::uint64_t boundary_elements = std::max<hsize_t>(boundary_total, 1);
-    std::vector<std::uint64_t> checksums(2 * fields.size(), 0);
-    for (std::size_t f = 0; f < fields.size(); ++f) {
-      const auto& values = fields[f].values;
-      for (std::size_t p = 0; p < placement.fluid_locals.size(); ++p) {
-        const hsize_t* c = &placement.fluid_coordinates[3 * p];
-        const std::uint64_t e = (c[0] * dims[1] + c[1]) * dims[2] + c[2];
-        checksums[2 * f] += element_hash(e, values[static_cast<std::size_t>(placement.fluid_locals[p])]) -
-                            element_hash(e, fill);
-      }
-      for (std::size_t p = 0; p < placement.boundary_locals.size(); ++p) {
-        const std::uint64_t e = placement.boundary_coordinates[p];
-        checksums[2 * f + 1] +=
-            element_hash(e, values[static_cast<std::size_t>(placement.boundary_locals[p])]) - element_hash(e, fill);
-      }
-    }
-    MPI_Allreduce(MPI_IN_PLACE, checksums.data(), static_cast<int>(checksums.size()), MPI_UINT64_T,
-                  MPI_SUM, comm.get());
-    const std::uint64_t fluid_base = uniform_checksum(dims[0] * dims[1] * dims[2], fill);
-    const std::uint64_t boundary_base = uniform_checksum(boundary_elements, fill);
-    const auto field_coordinates = with_unowned(placement.fluid_coordinates, placement.unowned_coordinates);
-    const auto boundary_coordinates = with_unowned(placement.boundary_coordinates, placement.unowned_boundary);
-    std::vector<double> buffer;
-    for (std::size_t f = 0; f < fields.size(); ++f) {
-      const auto& field = fields[f];
-      Dataset ds, bs;
+    // Rank 0 holds one whole array at a time (a field on the domain's cells, or its boundary cells).
+    for (const auto& field : fields) {
+      auto whole = fluid.gather(values_at(field.values, placement.fluid_locals, 1), 1, fill);
       step([&] {
-        ds = create_dataset(field_group.get(), field.name, H5T_NATIVE_DOUBLE, dims, &fill);
+        Dataset ds = create_dataset(field_group.get(), field.name, H5T_NATIVE_DOUBLE, dims, &fill);
         write_utf8_attribute(ds.get(), "centering", centering_name(field.centering));
         if (!field.units.empty()) write_utf8_attribute(ds.get(), "units", field.units);
+        write_array(ds, whole);
       });
+      whole = boundary.gather(values_at(field.values, placement.boundary_locals, 1), 1, fill);
       step([&] {
-        buffer.clear();
-        for (const int l : placement.fluid_locals) buffer.push_back(field.values[static_cast<std::size_t>(l)]);
-        buffer.resize(field_coordinates.size() / 3, fill);
-        transfer_points(ds.get(), H5T_NATIVE_DOUBLE, field_coordinates, 3, buffer.data(), true);
-        write_checksum_attribute(ds.get(), fluid_base + checksums[2 * f]);
-      });
-      step([&] {
-        bs = create_dataset(boundary_group.get(), field.name, H5T_NATIVE_DOUBLE,
-                            {boundary_elements}, &fill);
-      });
-      step([&] {
-        buffer.clear();
-        for (const int l : placement.boundary_locals) buffer.push_back(field.values[static_cast<std::size_t>(l)]);
-        buffer.resize(boundary_coordinates.size(), fill);
-        transfer_points(bs.get(), H5T_NATIVE_DOUBLE, boundary_coordinates, 1, buffer.data(), true);
-        write_checksum_attribute(bs.get(), boundary_base + checksums[2 * f + 1]);
+        Dataset bs = create_dataset(boundary_group.get(), field.name, H5T_NATIVE_DOUBLE,
+                                    {boundary_elements}, &fill);
+        write_array(bs, whole);
       });
     }
-    write_cell_vectors(field_group.get(), layout, placement, viewing.cell_vectors, step);
+    write_cell_vectors(field_group.get(), g, placement, fluid, viewing.cell_vectors, step);
     write_openings(file.get(), comm, viewing.openings, step);
     step([&] { check_status(H5Fflush(file.get(), H5F_SCOPE_GLOBAL), "H5Fflush"); });
     step([&] {
@@ -606,7 +465,7 @@ void write_snapshot(const std::string& path, const parallel::Layout& layout,
     // Every rank is here (each step is agreed on). The final name is never touched: earlier
     // snapshots stay as they were.
     if (comm.is_root()) std::remove(temporary.c_str());
-    abandon_after_failed_write(file);
+    if (created) leave_failed_file_open(file.release());
     throw Hdf5Error("cannot write the snapshot " + path + " (" + e.what() + "; disk full?)");
   }
   agree(comm, [&] {
@@ -617,13 +476,15 @@ void write_snapshot(const std::string& path, const parallel::Layout& layout,
   });
 }
 
-SnapshotContents read_snapshot(const std::string& path, const parallel::Layout& layout,
-                               const std::vector<std::string>& names,
-                               std::vector<std::vector<double>>& fields,
-                               const std::vector<std::string>& optional) {
+namespace {
+
+// One rank's part of read_snapshot, with its own serial HDF5 file.
+SnapshotContents read_local(const std::string& path, const parallel::Layout& layout,
+                            const std::vector<std::string>& names,
+                            std::vector<std::vector<double>>& fields,
+                            const std::vector<std::string>& optional) {
   const auto& g = layout.grid();
-  File file = open_parallel(path, layout.comm().get(), false);
-  if (file.get() < 0) throw Hdf5Error("cannot open snapshot " + path);
+  File file = open_snapshot_readonly(path);
   SnapshotContents contents;
   contents.info.time = read_double_attribute(file.get(), "time");
   contents.info.dt = read_double_attribute(file.get(), "dt");
@@ -636,71 +497,56 @@ SnapshotContents read_snapshot(const std::string& path, const parallel::Layout& 
   // The grid must be the one this run uses, face by face.
   const char* face_names[] = {"grid/x_faces", "grid/y_faces", "grid/z_faces"};
   for (int d = 0; d < 3; ++d) {
-    Dataset ds(check(H5Dopen2(file.get(), face_names[d], H5P_DEFAULT), face_names[d]));
-    Dataspace space(check(H5Dget_space(ds.get()), "H5Dget_space"));
-    const auto n = static_cast<std::size_t>(H5Sget_simple_extent_npoints(space.get()));
+    const auto stored = read_doubles(file.get(), face_names[d]);
     const auto& faces = g.axis(d).faces();
-    std::vector<double> stored(n);
-    if (n == faces.size())
-      check_status(H5Dread(ds.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, stored.data()),
-                   "H5Dread faces");
-    bool same = n == faces.size();
-    for (std::size_t i = 0; same && i < n; ++i)
+    bool same = stored.size() == faces.size();
+    for (std::size_t i = 0; same && i < stored.size(); ++i)
       same = std::abs(stored[i] - faces[i]) <= 1e-12 * (1.0 + std::abs(faces[i]));
     if (!same)
       throw Hdf5Error("snapshot " + path + " was written on another grid (" +
                       std::string("xyz").substr(static_cast<std::size_t>(d), 1) + ": " +
-                      std::to_string(static_cast<long>(n) - 1) + " cells in the file, " +
+                      std::to_string(static_cast<long>(stored.size()) - 1) + " cells in the file, " +
                       std::to_string(g.cells(d)) + " in this deck, or different coordinates)");
   }
 
   // Boundary ordinals come from the file's list, not from this run's flags.
-  Placement placement;
-  {
-    Dataset ds(check(H5Dopen2(file.get(), "boundary/natural", H5P_DEFAULT), "boundary/natural"));
-    Dataspace space(check(H5Dget_space(ds.get()), "H5Dget_space"));
-    std::vector<std::int64_t> naturals(static_cast<std::size_t>(H5Sget_simple_extent_npoints(space.get())));
-    check_status(H5Dread(ds.get(), H5T_NATIVE_INT64, H5S_ALL, H5S_ALL, H5P_DEFAULT, naturals.data()),
-                 "H5Dread natural");
-    placement.boundary_naturals = std::move(naturals);
-  }
-  for (int l = 0; l < layout.local_count(); ++l) {
-    if (layout.kind(l) == grid::CellKind::fluid) {
-      add_fluid_point(placement, layout.index3(l), l);
-    } else {
-      const auto it = std::lower_bound(placement.boundary_naturals.begin(),
-                                       placement.boundary_naturals.end(), layout.natural(l));
-      if (it == placement.boundary_naturals.end() || *it != layout.natural(l))
-        throw Hdf5Error("snapshot " + path + " has different geometry: a boundary cell of this "
-                        "deck is not a boundary cell in the file");
-      add_boundary_point(placement, layout.natural(l), l);
-    }
-  }
-
+  const Placement placement =
+      place_cells(layout, layout.local_count(), read_int64s(file.get(), "boundary/natural"), path);
   fields.assign(names.size(), std::vector<double>(static_cast<std::size_t>(layout.local_count())));
-  std::vector<double> buffer;
+  // Each rank reads one whole dataset at a time and takes its cells from it.
+  const auto take = [&](const std::string& dataset, const std::vector<int>& locals,
+                        const std::vector<std::uint64_t>& elements, std::vector<double>& out) {
+    const auto whole = read_doubles(file.get(), dataset);
+    for (std::size_t p = 0; p < locals.size(); ++p) {
+      if (elements[p] >= whole.size())
+        throw Hdf5Error("snapshot " + path + ": dataset " + dataset + " is smaller than the grid");
+      out[static_cast<std::size_t>(locals[p])] = whole[elements[p]];
+    }
+  };
   for (std::size_t f = 0; f < names.size(); ++f) {
-    const std::string field_path = "fields/" + names[f];
     if (!has_field(file.get(), names[f])) {
       if (std::find(optional.begin(), optional.end(), names[f]) == optional.end())
         throw Hdf5Error("snapshot " + path + " has no field '" + names[f] + "'");
       std::fill(fields[f].begin(), fields[f].end(), std::nan(""));
       continue;
     }
-    Dataset ds(check(H5Dopen2(file.get(), field_path.c_str(), H5P_DEFAULT), field_path.c_str()));
-    buffer.assign(placement.fluid_locals.size(), 0.0);
-    transfer_points(ds.get(), H5T_NATIVE_DOUBLE, placement.fluid_coordinates, 3, buffer.data(), false);
-    for (std::size_t p = 0; p < buffer.size(); ++p)
-      fields[f][static_cast<std::size_t>(placement.fluid_locals[p])] = buffer[p];
-
-    const std::string boundary_path = "boundary/" + names[f];
-    Dataset bs(check(H5Dopen2(file.get(), boundary_path.c_str(), H5P_DEFAULT), boundary_path.c_str()));
-    buffer.assign(placement.boundary_locals.size(), 0.0);
-    transfer_points(bs.get(), H5T_NATIVE_DOUBLE, placement.boundary_coordinates, 1, buffer.data(), false);
-    for (std::size_t p = 0; p < buffer.size(); ++p)
-      fields[f][static_cast<std::size_t>(placement.boundary_locals[p])] = buffer[p];
+    take("fields/" + names[f], placement.fluid_locals, placement.fluid_elements, fields[f]);
+    take("boundary/" + names[f], placement.boundary_locals, placement.boundary_elements, fields[f]);
     contents.field_names.push_back(names[f]);
   }
+  return contents;
+}
+
+}  // namespace
+
+SnapshotContents read_snapshot(const std::string& path, const parallel::Layout& layout,
+                               const std::vector<std::string>& names,
+                               std::vector<std::vector<double>>& fields,
+                               const std::vector<std::string>& optional) {
+  // Every rank reads the file on its own; a failure on any rank (one whose cells find the
+  // geometry different) stops every rank with its message.
+  SnapshotContents contents;
+  agree(layout.comm(), [&] { contents = read_local(path, layout, names, fields, optional); });
   return contents;
 }
 

@@ -1,5 +1,6 @@
 #pragma once
-// HDF5 snapshots: one file per snapshot, written in parallel by all ranks.
+// HDF5 snapshots: one file per snapshot, written by rank 0 alone (HDF5's serial driver) from the
+// values every rank sends it; read by every rank on its own.
 //
 // Layout of a snapshot file (docs/output.md):
 //   /                    attributes: time [s], step, dt [s], format_version, bagnold_version, title,
@@ -116,11 +117,11 @@ std::uintmax_t snapshot_size_estimate(const parallel::Layout& layout, const grid
                                       std::size_t opening_values = 0);
 
 // Collective: every rank calls with the same field names in the same order (and the same
-// viewing data names and opening faces).
-// The file is written as PATH.tmp and renamed when complete; rank 0 first reserves `reserve`
-// bytes on disk for it (disk_reservation.hpp; 0: none). Every step is agreed on by all ranks
-// (agree.hpp): a failure on any rank throws Hdf5Error naming the snapshot on every rank, the
-// .tmp removed. A file whose writes failed is left open (failed_file.hpp).
+// viewing data names and opening faces), and sends its owned values to rank 0, which writes the
+// file alone, each dataset whole. The file is written as PATH.tmp and renamed when complete;
+// rank 0 first reserves `reserve` bytes on disk for it (disk_reservation.hpp; 0: none). Every
+// step of rank 0's is agreed on by all ranks (agree.hpp): a failure throws Hdf5Error naming the
+// snapshot on every rank, the .tmp removed.
 void write_snapshot(const std::string& path, const parallel::Layout& layout,
                     const grid::CellFlags& flags, const std::vector<FieldView>& fields,
                     const SnapshotInfo& info, const ViewingData& viewing = {},
@@ -131,8 +132,9 @@ struct SnapshotContents {
   std::vector<std::string> field_names;
 };
 
-// Collective: reads the named fields into `fields` (local_count() entries each, halo included)
-// for whatever layout the reader has, so a run restarts on any number of ranks. Throws when the
+// Collective: each rank reads the named fields into `fields` (local_count() entries each, halo
+// included) for whatever layout the reader has, so a run restarts on any number of ranks. A
+// failure on any rank throws on every rank (agree.hpp). Throws when the
 // snapshot's grid differs from `layout`'s grid, or lacks a named field that is not in
 // `optional` (an optional field the file lacks reads as NaN and is not in field_names).
 SnapshotContents read_snapshot(const std::string& path, const parallel::Layout& layout,

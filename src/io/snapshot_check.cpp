@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "src/io/hdf5_handle.hpp"
+#include "src/io/hdf5_read.hpp"
 
 namespace bagnold::io {
 
@@ -18,9 +19,9 @@ std::uint64_t element_hash(std::uint64_t index, double value) {
   return z ^ (z >> 31);
 }
 
-std::uint64_t uniform_checksum(std::uint64_t count, double value) {
+std::uint64_t checksum(std::span<const double> values) {
   std::uint64_t sum = 0;
-  for (std::uint64_t e = 0; e < count; ++e) sum += element_hash(e, value);
+  for (std::size_t e = 0; e < values.size(); ++e) sum += element_hash(e, values[e]);
   return sum;
 }
 
@@ -29,12 +30,7 @@ namespace {
 // The whole dataset at `path` in the file, or nothing if it is absent.
 std::optional<std::vector<double>> read_all(hid_t file, const std::string& path) {
   if (H5Lexists(file, path.c_str(), H5P_DEFAULT) <= 0) return std::nullopt;
-  Dataset ds(check(H5Dopen2(file, path.c_str(), H5P_DEFAULT), path.c_str()));
-  Dataspace space(check(H5Dget_space(ds.get()), "H5Dget_space"));
-  std::vector<double> values(static_cast<std::size_t>(H5Sget_simple_extent_npoints(space.get())));
-  check_status(H5Dread(ds.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()),
-               ("H5Dread " + path).c_str());
-  return values;
+  return read_doubles(file, path);
 }
 
 // The dataset's stored checksum, or nothing (a snapshot written before checksums existed).
@@ -53,9 +49,7 @@ std::optional<std::string> check_dataset(hid_t file, const std::string& path,
   if (!stored) return std::nullopt;
   values = *stored;
   if (const auto expected = stored_checksum(file, path)) {
-    std::uint64_t sum = 0;
-    for (std::size_t e = 0; e < values.size(); ++e) sum += element_hash(e, values[e]);
-    if (sum != *expected) return "dataset " + path + " does not match its checksum (corrupted)";
+    if (checksum(values) != *expected) return "dataset " + path + " does not match its checksum (corrupted)";
   }
   return std::nullopt;
 }

@@ -4,21 +4,22 @@
 //
 // The checksum of a dataset of doubles is Σ_e h(e, bits(v_e)) mod 2⁶⁴ over all its elements e
 // (row-major index), h a 64-bit mix of the index and the value's bits (SplitMix64's finalizer,
-// Steele, Lea & Flood, OOPSLA 2014). A sum does not depend on which rank wrote which element, so
-// each rank adds its own points and one Allreduce gives the whole; elements nobody writes hold the
-// fill value (NaN) and enter as h(e, bits(NaN)). It is stored as the dataset's uint64 attribute
-// `checksum`. Any changed byte of a stored value changes it (with probability 1 − 2⁻⁶⁴).
+// Steele, Lea & Flood, OOPSLA 2014). The writer sums it over the whole array it writes (gathered
+// on rank 0), the elements no rank owns holding the fill value (NaN) and entering as
+// h(e, bits(NaN)). It is stored as the dataset's uint64 attribute `checksum`. Any changed byte of
+// a stored value changes it (with probability 1 − 2⁻⁶⁴).
 #include <cmath>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
 namespace bagnold::io {
 
 std::uint64_t element_hash(std::uint64_t index, double value);
-// Σ_{e < count} h(e, value): a dataset of `count` elements that all hold `value`.
-std::uint64_t uniform_checksum(std::uint64_t count, double value);
+// Σ_e h(e, values[e]): the checksum of a dataset holding `values`.
+std::uint64_t checksum(std::span<const double> values);
 
 // What a restart accepts in a field's fluid cells.
 struct FieldRange {

@@ -60,6 +60,7 @@ StepResult FlowSolver::advance(run::FlowState& state, const run::FlowState& old,
   const double largest_scale = scale_growth_cap * residual_velocity_scale(old, INFINITY, nullptr);
   if (m_pressure) m_pressure->start_step();
   if (m_anderson) m_anderson->start_step(old);
+  StallWatch stall_watch;
   for (int iteration = 1; iteration <= m_settings.max_outer_iterations; ++iteration) {
     IterationSums sums;
     const double velocity_scale = residual_velocity_scale(state, largest_scale, &sums);
@@ -106,6 +107,10 @@ StepResult FlowSolver::advance(run::FlowState& state, const run::FlowState& old,
                                                 m_settings.density[solids], old, dt, state);
       }
       result.converged = true;
+      return result;
+    }
+    if (m_settings.detect_stall && stall_watch.stalled(iteration, largest)) {
+      result.stalled = true;
       return result;
     }
     // The next iteration starts from Anderson's mixture of the last results (anderson_mixing.hpp).

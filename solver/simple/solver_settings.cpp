@@ -13,6 +13,7 @@ SolverSettings::SolverSettings(const deck::Deck& deck, const parallel::Domain& d
       gravity(deck.physics.gravity),
       tolerance(deck.numerics.tolerance),
       max_outer_iterations(deck.numerics.max_outer_iterations),
+      detect_stall(deck.numerics.detect_stall),
       anderson_depth(deck.numerics.anderson_depth),
       relax_velocity(deck.numerics.relax_velocity),
       relax_pressure(deck.numerics.relax_pressure),

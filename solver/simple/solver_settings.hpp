@@ -32,6 +32,7 @@ struct SolverSettings {
 
   double tolerance = 1e-4;  // numerics.tolerance
   int max_outer_iterations = 40;
+  bool detect_stall = false;  // numerics.detect_stall: StallWatch (step_record.hpp)
   int anderson_depth = 0;  // numerics.anderson_depth: 0 Picard
   double relax_velocity = 0.7;  // α_u
   double relax_pressure = 1.0;  // α_p

@@ -93,8 +93,30 @@ class WorstCells {
   std::array<int, equation_count> m_local{};
 };
 
+// numerics.detect_stall, MFIX's DETECT_STALL (CHECK_CONVERGENCE in MFIX 21.3): every
+// stall_interval outer iterations the largest residual is compared with its value that many
+// iterations before; from the third comparison on (iteration 15), one that has not fallen means
+// the step has stalled, and it is redone with a smaller dt instead of running on to
+// numerics.max_outer_iterations.
+class StallWatch {
+ public:
+  static constexpr int stall_interval = 5;
+  // Whether the step has stalled, given the largest residual of outer iteration `iteration`
+  // (1, 2, ...; called once per iteration, in order).
+  bool stalled(int iteration, double largest) {
+    if (iteration % stall_interval != 0) return false;
+    const bool stalled = iteration > 2 * stall_interval && !(largest < m_checkpoint);
+    m_checkpoint = largest;
+    return stalled;
+  }
+
+ private:
+  double m_checkpoint = INFINITY;
+};
+
 struct StepResult {
   bool converged = false;
+  bool stalled = false;  // stopped by numerics.detect_stall (StallWatch)
   int iterations = 0;
   Residuals residuals;  // of the last outer iteration
   double first_largest = 0.0;  // the largest residual of the first outer iteration

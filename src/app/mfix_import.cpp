@@ -2,6 +2,8 @@
 // Keyword meanings follow MFIX 21.3's keyword reference; units: SI, or cgs converted to SI.
 #include "src/app/mfix_import.hpp"
 
+#include "src/deck/deck.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -53,7 +55,7 @@ bool output_only(const std::string& keyword) {
   static const std::set<std::string> names = {
       "spx_dt", "full_log", "nlog", "resid_string", "report_mass_balance_dt", "write_vtk_files",
       "time_dependent_filename", "nodesi", "nodesj", "nodesk", "write_dashboard", "out_dt",
-      "usr_dt", "batch_wallclock", "term_buffer", "chk_batchq_end", "detect_stall", "group_resid",
+      "usr_dt", "batch_wallclock", "term_buffer", "chk_batchq_end", "group_resid",
       "description", "run_name"};
   return names.count(keyword) > 0 || keyword.rfind("monitor_", 0) == 0 ||
          keyword.rfind("vtk_", 0) == 0;
@@ -665,12 +667,28 @@ void Translator::numerics_and_output() {
   }
   out_ << "convection = \"" << schemes.at(scheme.value_or(0)) << "\"   # MFIX discretize"
        << (scheme ? "" : " (MFIX's default 0, first-order upwind)") << (consistent ? "" : " (the first)") << "\n";
-  if (const auto tol = real("tol_resid", {}, 1.0))
-    out_ << "tolerance = " << real_text(*tol) << "   # MFIX tol_resid (MFIX normalizes its residuals otherwise: docs/import-mfix.md)\n";
+  // MFIX's tol_resid bounds a sum of residuals normalized otherwise (CHECK_CONVERGENCE), so the
+  // same number is not the same stopping point. Bagnold's own tolerance is written instead:
+  // under it the imported bins discharge as converged runs do, where tol_resid = 1e-3 taken as
+  // Bagnold's tolerance accepted steps after one or two outer iterations and drained the 5 mm
+  // bin at 87 g/s instead of 230 (docs/import-mfix.md).
+  if (const Record* r = take("tol_resid")) {
+    if (!as_real(*r)) refuse(*r, "'" + r->value + "' is not a number");
+    else note(*r, "MFIX's convergence sum (CHECK_CONVERGENCE), normalized otherwise; numerics.tolerance is Bagnold's own");
+  }
+  out_ << "tolerance = " << real_text(deck::Numerics{}.tolerance)
+       << "   # Bagnold's default, not MFIX tol_resid (docs/import-mfix.md)\n";
   if (const Record* r = take("max_nit")) {
     const auto n = as_integer(*r);
     if (!n || *n < 1) refuse(*r, "not a positive integer");
     else out_ << "max_outer_iterations = " << std::min(*n, 1000) << "   # MFIX max_nit" << (*n > 1000 ? " (Bagnold's limit 1000)" : "") << "\n";
+  }
+  {
+    const Record* r = take("detect_stall");
+    const auto stall = r ? as_logical(*r) : std::optional<bool>(true);
+    if (!stall) refuse(*r, "'" + r->value + "' is not a logical");
+    else out_ << "detect_stall = " << (*stall ? "true" : "false") << "   # MFIX detect_stall"
+              << (r ? "" : " (MFIX's default .T.)") << "\n";
   }
   if (const auto fac = real("dt_fac", {}, 1.0)) {
     if (*fac <= 0.0 || *fac > 1.0) refuse(*take("dt_fac"), "dt_fac must be in (0, 1]");

@@ -139,6 +139,7 @@ struct Numerics {
   std::string residual_normalization = "velocity-scale";  // velocity-scale | force | deviation
   bool net_force_residual = false;  // also |Σ row residuals| / the phase's weight
   int max_outer_iterations = 40;         // before the step is redone with dt / 2
+  bool detect_stall = false;             // redo a step whose largest residual stops falling
   int anderson_depth = 0;                // 0: Picard; m: Anderson mixing over the last m iterates
   int easy_outer_iterations = 8;         // at or below: the next step grows
   int hard_outer_iterations = 0;         // above (if > 0): the next step shrinks

@@ -305,6 +305,13 @@ const Section<Numerics>& numerics_section() {
                "cases/chute/README.md). No effect without gravity."),
       key(&Numerics::max_outer_iterations, "max_outer_iterations").init().within(1, 1000)
           .doc("SIMPLE outer iterations before the step is redone with dt / 2."),
+      key(&Numerics::detect_stall, "detect_stall").init()
+          .doc("Whether a step whose outer iteration has stopped converging is redone with dt / 2 "
+               "at once instead of after max_outer_iterations (MFIX's DETECT_STALL): every 5 "
+               "outer iterations, from the 15th, the largest residual must have fallen below "
+               "its value 5 iterations before. It changes which dt a step is taken with, not "
+               "the equations a converged step satisfies. bagnold import-mfix sets it as the "
+               "MFIX deck does (MFIX's default: on)."),
       key(&Numerics::anderson_depth, "anderson_depth").init().within(0, 20)
           .doc("0: each outer iteration starts from the last one's result (Picard). m > 0: from "
                "Anderson's mixture of the last m + 1 results, the affine combination whose "

@@ -177,6 +177,23 @@ TEST(StepRecord, AStepThatFailedDivergedOnlyIfItsLargestResidualGrewOrBecameNonF
   EXPECT_TRUE(result.diverged());
 }
 
+TEST(StallWatch, AStepStallsWhenItsLargestResidualHasNotFallenOverFiveIterations) {
+  // MFIX's DETECT_STALL: checked at iterations 5, 10, 15, ...; from 15 on against the value 5
+  // iterations before.
+  const auto first_stall = [](auto residual_at) {
+    solver::StallWatch watch;
+    for (int it = 1; it <= 100; ++it)
+      if (watch.stalled(it, residual_at(it))) return it;
+    return 0;
+  };
+  EXPECT_EQ(first_stall([](int it) { return std::pow(0.95, it); }), 0);  // slow but falling
+  EXPECT_EQ(first_stall([](int) { return 1e-3; }), 15);                 // flat: not before 15
+  EXPECT_EQ(first_stall([](int it) { return it < 30 ? std::pow(0.9, it) : 0.05; }), 35);
+  // An oscillation that rises at one check stalls there, even though it fell in between.
+  EXPECT_EQ(first_stall([](int it) { return (it % 10 == 0 ? 2.0 : 1.0) * std::pow(0.99, it); }), 20);
+  EXPECT_EQ(first_stall([](int it) { return it >= 17 ? NAN : 1.0 / it; }), 20);  // NaN stalls
+}
+
 TEST(StepRecord, ALocationReadsAsCellFaceAndRegion) {
   solver::CellLocation where;
   where.cell = {0, 2, 0};

@@ -274,8 +274,8 @@ Stress appendix_d_published(double phi, double gamma_hat, const Material& m) {
 
 const double frictions[] = {0.3, 0.5};
 const double distances[] = {0.005, 0.014, -0.005, -0.014};  // φ − φ_c
-const double scaled_rates[] = {1e-7, 1e-4, 1e-2};            // γ̂
-const double bond_numbers[] = {5e-6, 5e-5};                  // Bo*
+const double scaled_rates[] = {1e-7, 1e-4, 1e-2};           // γ̂
+const std::vector<double> bond_numbers{5e-6, 5e-5};         // Bo*
 
 // The project's default material (models/material.hpp) at friction μ and Bo*.
 Material default_material(double friction, double bond = 0.0) {
@@ -361,37 +361,163 @@ std::string scientific(double x) {
 
 constexpr double tolerance = 1e-6;  // relative, the requirement
 
+// ---------------------------------------------------------------------------------------------
+// The two checks, written once and run for each appendix.
+
+// What the defaults are documented to give before the viscosity regularization: the appendix's
+// p with p_QS's |φ − φ_c|^n replaced by g(x) with onset smoothing x_s, and τ = η p at that p.
+// App. A: Eq. 8's n = 2/3 in Eq. 7, with Eqs. 9–10 as published; η from Eqs. 11–13.
+Stress appendix_a_documented_default(double phi, double gamma_hat, double smoothing,
+                                     const Material& m) {
+  const auto r = appendix_a::at(m.friction);
+  const double smoothed_qs =
+      r.alpha_qs * documented_smoothed_power(phi - r.critical, 2.0 / 3.0, smoothing);
+  const double documented_scaled_p = appendix_a::blended_pressure(
+      phi, r, smoothed_qs, appendix_a::intermediate_pressure(gamma_hat),
+      appendix_a::inertial_pressure(phi, gamma_hat, r));
+  return appendix_a_stress(documented_scaled_p, gamma_hat, m, r);
+}
+// App. D: Eq. 7's n = ϵ in Eq. 10, with Eqs. 8, 9, 11 and 12 as published; η from Eqs. 13–15, 19.
+Stress appendix_d_documented_default(double phi, double gamma_hat, double smoothing,
+                                     const Material& m) {
+  const auto r = appendix_d::at(m.friction);
+  const double bond = m.bond_number;
+  const double smoothed_qs =
+      r.alpha_qs * documented_smoothed_power(phi - r.critical, r.epsilon, smoothing);
+  const double documented_scaled_p = appendix_d::blended_pressure(
+      phi, r, smoothed_qs, appendix_d::intermediate_pressure(gamma_hat, r),
+      appendix_d::inertial_pressure(phi, gamma_hat, r),
+      appendix_d::first_cohesive_pressure(phi, bond, r),
+      appendix_d::second_cohesive_pressure(bond, r));
+  return appendix_d_stress(phi, documented_scaled_p, gamma_hat, m, r);
+}
+
+// One state: μ, Bo* (0 for App. A), φ − φ_c and γ̂.
+struct State {
+  double mu, bond, distance, gamma_hat;
+};
+
+// An appendix as the checks see it.
+struct Appendix {
+  std::string model;                    // the project's model for it
+  models::Coefficients unregularized;   // that model with every regularization off
+  std::vector<double> bonds;            // the Bo* it is checked at
+  double (*critical)(double friction);  // φ_c at a tabulated μ
+  Stress (*published)(double phi, double gamma_hat, const Material& m);
+  Stress (*documented_default)(double phi, double gamma_hat, double smoothing, const Material& m);
+
+  // The states of the header comment, in the order they are checked and recorded.
+  std::vector<State> states() const {
+    std::vector<State> all;
+    for (const double mu : frictions)
+      for (const double bond : bonds)
+        for (const double distance : distances)
+          for (const double gamma_hat : scaled_rates)
+            all.push_back({mu, bond, distance, gamma_hat});
+    return all;
+  }
+};
+
+const Appendix appendix_a_rheology{
+    .model = "steady-shear",
+    .unregularized = unregularized_steady_shear(),
+    .bonds = {0.0},
+    .critical = [](double mu) { return appendix_a::at(mu).critical; },
+    .published = appendix_a_published,
+    .documented_default = appendix_a_documented_default};
+
+const Appendix appendix_d_rheology{
+    .model = "steady-shear-cohesive",
+    .unregularized = unregularized,
+    .bonds = bond_numbers,
+    .critical = [](double mu) { return appendix_d::at(mu).critical; },
+    .published = appendix_d_published,
+    .documented_default = appendix_d_documented_default};
+
+// The largest |relative difference| of p and of τ seen so far.
+struct Worst {
+  double p = 0.0, tau = 0.0;
+  void update(double p_rel, double tau_rel) {
+    p = std::max(p, std::abs(p_rel));
+    tau = std::max(tau, std::abs(tau_rel));
+  }
+};
+
+void record(const std::string& key, const std::string& value) {
+  ::testing::Test::RecordProperty(key, value);
+}
+
+// Every regularization off, default and fine material: p and τ equal the appendix's to
+// `tolerance`. (A failed ASSERT returns from here, which ends the calling TEST.)
+void check_matches_with_regularizations_off(const Appendix& a) {
+  const auto model = make_model(a.model, a.unregularized);
+  Worst worst;
+  for (const auto& material_at : {default_material, fine_material})
+    for (const State& s : a.states()) {
+      const Material m = material_at(s.mu, s.bond);
+      const double phi = a.critical(s.mu) + s.distance;
+      const double rate = shear_rate_at(s.gamma_hat, m);
+      const Stress published = a.published(phi, s.gamma_hat, m);
+      ASSERT_GT(published.shear_stress, 0.0);  // η > 0: the code's clip at η = 0 is idle
+      ASSERT_LT(published.shear_stress / rate, viscosity_ceiling);  // the cap is idle
+      const auto row = models::shear_rheometer(*model, m, phi, rate);
+      const std::string where = state_name(a.model, s.mu, s.distance, s.gamma_hat, s.bond) +
+                                ", d = " + scientific(m.diameter);
+      EXPECT_NEAR(row.pressure, published.pressure, tolerance * published.pressure) << where;
+      EXPECT_NEAR(row.shear_stress, published.shear_stress, tolerance * published.shear_stress)
+          << where;
+      worst.update(relative(row.pressure, published.pressure),
+                   relative(row.shear_stress, published.shear_stress));
+    }
+  record("max_relative_difference_pressure", scientific(worst.p));
+  record("max_relative_difference_shear_stress", scientific(worst.tau));
+}
+
+// The default coefficients, default material: records how far p and τ are from the appendix and
+// asserts only what the defaults are documented to do (see the TESTs below).
+void check_defaults_depart_only_as_documented(const Appendix& a) {
+  const auto model = make_model(a.model);
+  const double smoothing = declared_default(a.model, "onset_smoothing");
+  const double min_rate = declared_default(a.model, "min_strain_rate");
+  const double max_viscosity = declared_default(a.model, "max_viscosity");
+  record("default_onset_smoothing", scientific(smoothing));
+  record("default_min_strain_rate", scientific(min_rate));
+  record("default_max_viscosity", scientific(max_viscosity));
+  Worst worst;
+  for (const State& s : a.states()) {
+    const Material m = default_material(s.mu, s.bond);
+    const double phi = a.critical(s.mu) + s.distance;
+    const double rate = shear_rate_at(s.gamma_hat, m);
+    const Stress published = a.published(phi, s.gamma_hat, m);
+    const auto row = models::shear_rheometer(*model, m, phi, rate);
+    const std::string where = state_name(a.model, s.mu, s.distance, s.gamma_hat, s.bond);
+    const double p_rel = relative(row.pressure, published.pressure);
+    const double tau_rel = relative(row.shear_stress, published.shear_stress);
+    record(where, percent_pair(p_rel, tau_rel));
+    worst.update(p_rel, tau_rel);
+
+    // What the defaults are documented to do.
+    const Stress at_default_p = a.documented_default(phi, s.gamma_hat, smoothing, m);
+    const double documented_tau = documented_regularized_shear_stress(
+        at_default_p.shear_stress, rate, min_rate, max_viscosity);
+    EXPECT_NEAR(row.pressure, at_default_p.pressure, tolerance * at_default_p.pressure) << where;
+    EXPECT_NEAR(row.shear_stress, documented_tau, tolerance * documented_tau) << where;
+    if (s.distance > 0.0)
+      EXPECT_LE(row.pressure, published.pressure * (1.0 + tolerance)) << where;
+    else
+      EXPECT_NEAR(row.pressure, published.pressure, tolerance * published.pressure) << where;
+  }
+  record("max_abs_relative_departure_pressure", scientific(worst.p));
+  record("max_abs_relative_departure_shear_stress", scientific(worst.tau));
+}
+
 }  // namespace
 
 // =============================================================================================
 
 TEST(PublishedRheology, SteadyShearMatchesAppendixAWithRegularizationsOff) {
   // App. A Eqs. 7–13 with Tables I–II, every regularization off: p and τ to 1e-6 relative.
-  const auto model = make_model("steady-shear", unregularized_steady_shear());
-  double worst_p = 0.0, worst_tau = 0.0;
-  for (const auto& material_at : {default_material, fine_material})
-    for (const double mu : frictions)
-      for (const double distance : distances)
-        for (const double gamma_hat : scaled_rates) {
-          const Material m = material_at(mu, 0.0);
-          const double phi = appendix_a::at(mu).critical + distance;
-          const double rate = shear_rate_at(gamma_hat, m);
-          const Stress published = appendix_a_published(phi, gamma_hat, m);
-          ASSERT_GT(published.shear_stress, 0.0);  // η > 0: the code's clip at η = 0 is idle
-          ASSERT_LT(published.shear_stress / rate, viscosity_ceiling);  // the cap is idle
-          const auto row = models::shear_rheometer(*model, m, phi, rate);
-          const std::string where = state_name("steady-shear", mu, distance, gamma_hat) +
-                                    ", d = " + scientific(m.diameter);
-          EXPECT_NEAR(row.pressure, published.pressure, tolerance * published.pressure) << where;
-          EXPECT_NEAR(row.shear_stress, published.shear_stress,
-                      tolerance * published.shear_stress)
-              << where;
-          worst_p = std::max(worst_p, std::abs(relative(row.pressure, published.pressure)));
-          worst_tau =
-              std::max(worst_tau, std::abs(relative(row.shear_stress, published.shear_stress)));
-        }
-  RecordProperty("max_relative_difference_pressure", scientific(worst_p));
-  RecordProperty("max_relative_difference_shear_stress", scientific(worst_tau));
+  check_matches_with_regularizations_off(appendix_a_rheology);
 }
 
 TEST(PublishedRheology, SteadyShearDefaultsDepartFromAppendixAOnlyAsDocumented) {
@@ -403,134 +529,18 @@ TEST(PublishedRheology, SteadyShearDefaultsDepartFromAppendixAOnlyAsDocumented) 
   //    (docs/models.md, cohesive section: "Below φ_c it changes nothing");
   //  - shear stress: Eqs. 11–13 at that pressure, through μ_s = τ/sqrt(γ̇² + γ̇_min²) capped at
   //    μ_max (regularization.hpp).
-  const std::string name = "steady-shear";
-  const auto model = make_model(name);
-  const double smoothing = declared_default(name, "onset_smoothing");
-  const double min_rate = declared_default(name, "min_strain_rate");
-  const double max_viscosity = declared_default(name, "max_viscosity");
-  RecordProperty("default_onset_smoothing", scientific(smoothing));
-  RecordProperty("default_min_strain_rate", scientific(min_rate));
-  RecordProperty("default_max_viscosity", scientific(max_viscosity));
-  double worst_p = 0.0, worst_tau = 0.0;
-  for (const double mu : frictions)
-    for (const double distance : distances)
-      for (const double gamma_hat : scaled_rates) {
-        const Material m = default_material(mu);
-        const auto r = appendix_a::at(mu);
-        const double phi = r.critical + distance;
-        const double rate = shear_rate_at(gamma_hat, m);
-        const Stress published = appendix_a_published(phi, gamma_hat, m);
-        const auto row = models::shear_rheometer(*model, m, phi, rate);
-        const std::string where = state_name(name, mu, distance, gamma_hat);
-        const double p_rel = relative(row.pressure, published.pressure);
-        const double tau_rel = relative(row.shear_stress, published.shear_stress);
-        RecordProperty(where, percent_pair(p_rel, tau_rel));
-        worst_p = std::max(worst_p, std::abs(p_rel));
-        worst_tau = std::max(worst_tau, std::abs(tau_rel));
-
-        // What the defaults are documented to do.
-        const double smoothed_qs =
-            r.alpha_qs * documented_smoothed_power(phi - r.critical, 2.0 / 3.0, smoothing);
-        const double documented_scaled_p = appendix_a::blended_pressure(
-            phi, r, smoothed_qs, appendix_a::intermediate_pressure(gamma_hat),
-            appendix_a::inertial_pressure(phi, gamma_hat, r));
-        const Stress at_default_p = appendix_a_stress(documented_scaled_p, gamma_hat, m, r);
-        const double documented_tau = documented_regularized_shear_stress(
-            at_default_p.shear_stress, rate, min_rate, max_viscosity);
-        EXPECT_NEAR(row.pressure, at_default_p.pressure, tolerance * at_default_p.pressure)
-            << where;
-        EXPECT_NEAR(row.shear_stress, documented_tau, tolerance * documented_tau) << where;
-        if (distance > 0.0)
-          EXPECT_LE(row.pressure, published.pressure * (1.0 + tolerance)) << where;
-        else
-          EXPECT_NEAR(row.pressure, published.pressure, tolerance * published.pressure) << where;
-      }
-  RecordProperty("max_abs_relative_departure_pressure", scientific(worst_p));
-  RecordProperty("max_abs_relative_departure_shear_stress", scientific(worst_tau));
+  check_defaults_depart_only_as_documented(appendix_a_rheology);
 }
 
 TEST(PublishedRheology, CohesiveMatchesAppendixDWithRegularizationsOff) {
   // App. D Eqs. 7–15 and 19 with Table I, Bo* > 0, every regularization off: p and τ to 1e-6.
-  const auto model = make_model("steady-shear-cohesive", unregularized);
-  double worst_p = 0.0, worst_tau = 0.0;
-  for (const auto& material_at : {default_material, fine_material})
-    for (const double mu : frictions)
-      for (const double bond : bond_numbers)
-        for (const double distance : distances)
-          for (const double gamma_hat : scaled_rates) {
-            const Material m = material_at(mu, bond);
-            const double phi = appendix_d::at(mu).critical + distance;
-            const double rate = shear_rate_at(gamma_hat, m);
-            const Stress published = appendix_d_published(phi, gamma_hat, m);
-            ASSERT_GT(published.shear_stress, 0.0);
-            ASSERT_LT(published.shear_stress / rate, viscosity_ceiling);
-            const auto row = models::shear_rheometer(*model, m, phi, rate);
-            const std::string where = state_name("steady-shear-cohesive", mu, distance,
-                                                 gamma_hat, bond) +
-                                      ", d = " + scientific(m.diameter);
-            EXPECT_NEAR(row.pressure, published.pressure, tolerance * published.pressure)
-                << where;
-            EXPECT_NEAR(row.shear_stress, published.shear_stress,
-                        tolerance * published.shear_stress)
-                << where;
-            worst_p = std::max(worst_p, std::abs(relative(row.pressure, published.pressure)));
-            worst_tau = std::max(worst_tau,
-                                 std::abs(relative(row.shear_stress, published.shear_stress)));
-          }
-  RecordProperty("max_relative_difference_pressure", scientific(worst_p));
-  RecordProperty("max_relative_difference_shear_stress", scientific(worst_tau));
+  check_matches_with_regularizations_off(appendix_d_rheology);
 }
 
 TEST(PublishedRheology, CohesiveDefaultsDepartFromAppendixDOnlyAsDocumented) {
   // As the steady-shear defaults test, for App. D: Eq. 7's |φ − φ_c|^ϵ replaced by g(x) with the
   // declared x_s, the viscosity regularized as documented; nothing else.
-  const std::string name = "steady-shear-cohesive";
-  const auto model = make_model(name);
-  const double smoothing = declared_default(name, "onset_smoothing");
-  const double min_rate = declared_default(name, "min_strain_rate");
-  const double max_viscosity = declared_default(name, "max_viscosity");
-  RecordProperty("default_onset_smoothing", scientific(smoothing));
-  RecordProperty("default_min_strain_rate", scientific(min_rate));
-  RecordProperty("default_max_viscosity", scientific(max_viscosity));
-  double worst_p = 0.0, worst_tau = 0.0;
-  for (const double mu : frictions)
-    for (const double bond : bond_numbers)
-      for (const double distance : distances)
-        for (const double gamma_hat : scaled_rates) {
-          const Material m = default_material(mu, bond);
-          const auto r = appendix_d::at(mu);
-          const double phi = r.critical + distance;
-          const double rate = shear_rate_at(gamma_hat, m);
-          const Stress published = appendix_d_published(phi, gamma_hat, m);
-          const auto row = models::shear_rheometer(*model, m, phi, rate);
-          const std::string where = state_name(name, mu, distance, gamma_hat, bond);
-          const double p_rel = relative(row.pressure, published.pressure);
-          const double tau_rel = relative(row.shear_stress, published.shear_stress);
-          RecordProperty(where, percent_pair(p_rel, tau_rel));
-          worst_p = std::max(worst_p, std::abs(p_rel));
-          worst_tau = std::max(worst_tau, std::abs(tau_rel));
-
-          const double smoothed_qs =
-              r.alpha_qs * documented_smoothed_power(phi - r.critical, r.epsilon, smoothing);
-          const double documented_scaled_p = appendix_d::blended_pressure(
-              phi, r, smoothed_qs, appendix_d::intermediate_pressure(gamma_hat, r),
-              appendix_d::inertial_pressure(phi, gamma_hat, r),
-              appendix_d::first_cohesive_pressure(phi, bond, r),
-              appendix_d::second_cohesive_pressure(bond, r));
-          const Stress at_default_p = appendix_d_stress(phi, documented_scaled_p, gamma_hat, m, r);
-          const double documented_tau = documented_regularized_shear_stress(
-              at_default_p.shear_stress, rate, min_rate, max_viscosity);
-          EXPECT_NEAR(row.pressure, at_default_p.pressure, tolerance * at_default_p.pressure)
-              << where;
-          EXPECT_NEAR(row.shear_stress, documented_tau, tolerance * documented_tau) << where;
-          if (distance > 0.0)
-            EXPECT_LE(row.pressure, published.pressure * (1.0 + tolerance)) << where;
-          else
-            EXPECT_NEAR(row.pressure, published.pressure, tolerance * published.pressure)
-                << where;
-        }
-  RecordProperty("max_abs_relative_departure_pressure", scientific(worst_p));
-  RecordProperty("max_abs_relative_departure_shear_stress", scientific(worst_tau));
+  check_defaults_depart_only_as_documented(appendix_d_rheology);
 }
 
 }  // namespace bagnold::tests

@@ -27,24 +27,24 @@ bool FlowSolver::iterate(run::FlowState& state, const run::FlowState& old, doubl
     const ScopedStage stage(Stage::momentum);
     const MomentumPredictor::Inputs inputs{old, dt, f.closures, f.carried, velocity_scale, first};
     for (int d = 0; d < 3; ++d) {
-      if (!m_predictor.predict(d, inputs, state, f.response, sums, m_worst, result)) return false;
+      if (!m_predictor.predict(d, inputs, state, f.response, sums, f.worst, result)) return false;
       for (const Phase phase : {gas, solids}) carry_fractions(disc, state, phase, d, f.carried);
     }
   }
   if (m_pressure) {
     const ScopedStage stage(Stage::pressure);
-    if (!m_pressure->correct(f.response, f.carried, state, sums, m_worst, result)) return false;
+    if (!m_pressure->correct(f.response, f.carried, state, sums, f.worst, result)) return false;
     carry_all_fractions(disc, state, f.carried);
   }
   if (m_fraction) {
     const ScopedStage stage(Stage::fraction);
-    if (!m_fraction->correct(old, dt, f.closures, f.response, f.carried, state, sums, m_worst, result))
+    if (!m_fraction->correct(old, dt, f.closures, f.response, f.carried, state, sums, f.worst, result))
       return false;
   }
   if (m_energy) {
     const ScopedStage stage(Stage::energy);
     carry_all_fractions(disc, state, f.carried);
-    if (!m_energy->solve(old, dt, f.closures, f.carried, state, sums, m_worst, result)) return false;
+    if (!m_energy->solve(old, dt, f.closures, f.carried, state, sums, f.worst, result)) return false;
   }
   return true;
 }

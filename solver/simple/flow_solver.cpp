@@ -44,11 +44,11 @@ double FlowSolver::residual_velocity_scale(const run::FlowState& state, double c
 CellLocation FlowSolver::worst_cell(int equation) const {
   const auto& layout = m_discretization.layout();
   const auto& domain = m_discretization.domain();
-  const int local = m_worst.local(equation);
+  const int local = m_fields.worst.local(equation);
   struct {
     double value;
     int rank;
-  } mine{local >= 0 ? m_worst.value(equation) : -1.0, layout.comm().rank()}, worst{};
+  } mine{local >= 0 ? m_fields.worst.value(equation) : -1.0, layout.comm().rank()}, worst{};
   MPI_Allreduce(&mine, &worst, 1, MPI_DOUBLE_INT, MPI_MAXLOC, layout.comm().get());
   // A momentum row is the face between its owning cell and the owner's + neighbour along d;
   // either may be a boundary cell (an opening's face is owned by the cell beyond it).

@@ -89,6 +89,7 @@ class FlowSolver {
     ClosureFields closures;
     CarriedFractions carried;
     CorrectionResponse response;
+    WorstCells worst;  // where each equation's row residual is largest, for the messages
   };
 
   // The velocity residuals are measured against: the largest face velocity in the domain, but at
@@ -110,7 +111,6 @@ class FlowSolver {
   std::unique_ptr<VolumeFractionCorrection> m_fraction;  // null unless the solids move
   std::unique_ptr<GranularEnergyEquation> m_energy;      // null unless Θ is transported
   IterationFields m_fields;
-  WorstCells m_worst;
   std::vector<double> m_stepped_solids_flux;  // set by conserve_solids
   std::unique_ptr<AndersonMixing> m_anderson;  // null: Picard (numerics.anderson_depth = 0)
 };

@@ -104,74 +104,112 @@ int run_command(const DeckArguments& args) {
           true);
       return bad_input;
     }
-    // The state on the partition by fluid cells; with numerics.partition_weights = "work" on more
-    // than one rank, the partition weighted by that state's work (work_weights.hpp), and the
-    // state again on it.
-    run::FlowState state(0);
-    StartPoint start;
-    for (bool weighted = false;; weighted = true) {
-      state = run::FlowState(prepared.domain->layout.local_count());
-      run::set_initial_state(deck, *prepared.domain, state);
-      start = StartPoint{0.0, 0, deck.run.dt_initial, "", {}};
-      if (!snapshot.empty()) {
-        try {
-          start = restore_state(snapshot, *prepared.domain, state);
-        } catch (const io::Hdf5Error& e) {
-          say(std::string("bagnold run: cannot restart: ") + e.what(), true);
-          return bad_input;
-        }
-      }
-      if (weighted || deck.numerics.partition_weights != "work" || comm.size() == 1) break;
-      const auto weights = run::work_weights(*prepared.domain, state, solver::solids_threshold);
-      prepared.domain = std::make_unique<parallel::Domain>(deck, comm, weights);
-      say(run::work_partition_text(*prepared.domain, weights));
-    }
-    const parallel::Domain& domain = *prepared.domain;
-    if (!snapshot.empty()) {
-      // The snapshot's next dt, kept within the deck's limits: a restart with a new dt_max or
-      // dt_min obeys them from its first step.
-      const double snapshot_dt = start.dt;
-      start.dt = std::clamp(start.dt, deck.run.dt_min, deck.run.dt_max);
-      say(fmt::format("restart from {} at t = {:.6g} s, step {}", start.snapshot, start.time, start.step));
-      if (start.dt != snapshot_dt)
-        say(fmt::format("restart: the snapshot's next dt {:.3g} s is outside [run.dt_min, run.dt_max] = "
-                        "[{:.3g}, {:.3g}] s; the first step takes {:.3g} s",
-                        snapshot_dt, deck.run.dt_min, deck.run.dt_max, start.dt));
-    }
-    if (claim.replace) remove_earlier_run(deck, comm);
-    run::OutputWriter output(deck, domain, run::snapshot_record(provenance, deck::resolved_text(deck)));
-    if (!start.snapshot.empty()) {
-      try {
-        output.resume(start.time);
-      } catch (const io::Hdf5Error& e) {
-        say(std::string("bagnold run: cannot restart: ") + e.what(), true);
-        return bad_input;
-      }
-    }
-    record_run(deck, provenance, comm);
-    // Rank 0 alone writes the monitor: every rank learns if it could not (io::agree).
-    std::optional<io::Monitor> opened_monitor;
-    io::agree(comm, [&] {
-      opened_monitor.emplace(output.directory() + "/monitor.csv", monitor_columns(deck, domain),
-                             comm.is_root(), start.snapshot.empty() ? nullptr : &start.time);
-    });
-    io::Monitor& monitor = *opened_monitor;
     solver::PetscSession petsc(nullptr, nullptr);
     solver::PetscSession::add_options(args.petsc_options);
-    solver::FlowSolver flow(deck, domain);
-    if (start.snapshot.empty()) {
-      flow.apply_boundary_values(state);
-      say(snapshot_line(0.0, output.write(state, 0.0, 0, deck.run.dt_initial, deck.run.dt_initial)));
-    }
-    run::install_stop_handlers();
-    run::ProgressLine progress(
-        run::progress_style(deck.output.progress, comm.is_root(), isatty(STDERR_FILENO)),
-        deck.output.progress_interval, deck.run.end_time, start.time);
-    const TimeLoopContext context{deck, domain, output, monitor, progress,
-                                  [](const std::string& line) { say(line); }, args.verbose};
+    std::optional<run::ProgressLine> progress;
     const auto started = std::chrono::steady_clock::now();
-    const auto result = run_time_loop(context, flow, state, start.time, start.step, start.dt,
-                                      start.time_step_memory);
+    RunSummary result;
+    std::string rank_table;    // the ranks' balance at the end, on more than one rank
+    std::string directory;     // where the run writes
+    std::vector<int> weights;  // set when the run repartitions (numerics.repartition_imbalance)
+    // One segment per partition: the run's start, then one after each repartition, which
+    // continues from the snapshot the last segment ended with.
+    for (bool first_segment = true;; first_segment = false) {
+      // The state on the partition by fluid cells; with numerics.partition_weights = "work" on
+      // more than one rank (or after a repartition), the partition weighted by that state's work
+      // (work_weights.hpp), and the state again on it.
+      if (!weights.empty()) {
+        prepared.domain = std::make_unique<parallel::Domain>(deck, comm, weights);
+        say(run::work_partition_text(*prepared.domain, weights));
+      }
+      run::FlowState state(0);
+      StartPoint start;
+      for (bool weighted = !weights.empty();; weighted = true) {
+        state = run::FlowState(prepared.domain->layout.local_count());
+        run::set_initial_state(deck, *prepared.domain, state);
+        start = StartPoint{0.0, 0, deck.run.dt_initial, "", {}};
+        if (!snapshot.empty()) {
+          try {
+            start = restore_state(snapshot, *prepared.domain, state);
+          } catch (const io::Hdf5Error& e) {
+            say(std::string("bagnold run: cannot restart: ") + e.what(), true);
+            return first_segment ? bad_input : run_failed;
+          }
+        }
+        if (weighted || deck.numerics.partition_weights != "work" || comm.size() == 1) break;
+        weights = run::work_weights(*prepared.domain, state, solver::solids_threshold);
+        prepared.domain = std::make_unique<parallel::Domain>(deck, comm, weights);
+        say(run::work_partition_text(*prepared.domain, weights));
+      }
+      const parallel::Domain& domain = *prepared.domain;
+      if (first_segment && !snapshot.empty()) {
+        // The snapshot's next dt, kept within the deck's limits: a restart with a new dt_max or
+        // dt_min obeys them from its first step.
+        const double snapshot_dt = start.dt;
+        start.dt = std::clamp(start.dt, deck.run.dt_min, deck.run.dt_max);
+        say(fmt::format("restart from {} at t = {:.6g} s, step {}", start.snapshot, start.time, start.step));
+        if (start.dt != snapshot_dt)
+          say(fmt::format("restart: the snapshot's next dt {:.3g} s is outside [run.dt_min, run.dt_max] = "
+                          "[{:.3g}, {:.3g}] s; the first step takes {:.3g} s",
+                          snapshot_dt, deck.run.dt_min, deck.run.dt_max, start.dt));
+      }
+      if (first_segment && claim.replace) remove_earlier_run(deck, comm);
+      run::OutputWriter output(deck, domain, run::snapshot_record(provenance, deck::resolved_text(deck)));
+      if (!start.snapshot.empty()) {
+        try {
+          output.resume(start.time);
+        } catch (const io::Hdf5Error& e) {
+          say(std::string("bagnold run: cannot restart: ") + e.what(), true);
+          return first_segment ? bad_input : run_failed;
+        }
+      }
+      if (first_segment) record_run(deck, provenance, comm);
+      directory = output.directory();
+      // Rank 0 alone writes the monitor: every rank learns if it could not (io::agree).
+      std::optional<io::Monitor> opened_monitor;
+      io::agree(comm, [&] {
+        opened_monitor.emplace(output.directory() + "/monitor.csv", monitor_columns(deck, domain),
+                               comm.is_root(), start.snapshot.empty() ? nullptr : &start.time);
+      });
+      io::Monitor& monitor = *opened_monitor;
+      solver::FlowSolver flow(deck, domain);
+      if (start.snapshot.empty()) {
+        flow.apply_boundary_values(state);
+        say(snapshot_line(0.0, output.write(state, 0.0, 0, deck.run.dt_initial, deck.run.dt_initial)));
+      }
+      if (first_segment) {
+        run::install_stop_handlers();
+        progress.emplace(
+            run::progress_style(deck.output.progress, comm.is_root(), isatty(STDERR_FILENO)),
+            deck.output.progress_interval, deck.run.end_time, start.time);
+      }
+      const double partition_imbalance =
+          !weights.empty() && deck.numerics.repartition_imbalance > 0.0
+              ? run::work_imbalance(run::gather_rank_counters(comm, rank_counters(domain, state)))
+              : 0.0;
+      const TimeLoopContext context{deck, domain, output, monitor, *progress,
+                                    [](const std::string& line) { say(line); }, args.verbose,
+                                    partition_imbalance};
+      const auto segment = run_time_loop(context, flow, state, start.time, start.step, start.dt,
+                                         start.time_step_memory);
+      result.steps += segment.steps;
+      result.outer_iterations += segment.outer_iterations;
+      result.redone_steps += segment.redone_steps;
+      result.time = segment.time;
+      result.last_dt = segment.last_dt;
+      result.completed = segment.completed;
+      result.interrupted = segment.interrupted;
+      result.failure = segment.failure;
+      if (segment.repartition_from.empty()) {
+        if (comm.size() > 1)
+          rank_table = run::rank_balance_table(run::gather_rank_counters(comm, rank_counters(domain, state)));
+        break;
+      }
+      // Partition anew by the state's work; the next segment reads the state back from the
+      // snapshot just written, each rank its new cells.
+      weights = run::work_weights(domain, state, solver::solids_threshold);
+      snapshot = segment.repartition_from;
+    }
     for (const auto& option : solver::PetscSession::unused_options())
       say("bagnold run: warning: the PETSc option " + option +
               " was never used (misspelled, or for a solver this run does not have?)",
@@ -183,11 +221,10 @@ int run_command(const DeckArguments& args) {
     say(fmt::format("bagnold run: t = {:.6g} s after {} steps ({} redone), {:.2f} outer iterations "
                     "per step, {:.1f} s wall",
                     result.time, result.steps, result.redone_steps, per_step, wall));
-    if (comm.size() > 1)
-      say("bagnold run: per rank, over the run (wait: in MPI, during assembly and solves)\n" +
-          run::rank_balance_table(run::gather_rank_counters(comm, rank_counters(domain, state))));
+    if (!rank_table.empty())
+      say("bagnold run: per rank, over the run (wait: in MPI, during assembly and solves)\n" + rank_table);
     if (result.interrupted) {
-      say("bagnold run: interrupted; continue with --restart " + output.directory(), true);
+      say("bagnold run: interrupted; continue with --restart " + directory, true);
       return interrupted;
     }
     if (!result.completed) {

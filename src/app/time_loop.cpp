@@ -61,6 +61,8 @@ RunSummary run_time_loop(const TimeLoopContext& context, FlowSolver& flow, run::
   RunLog run_log(context.log, context.verbose, controller.dt());
   run::FlowState old = state;
   run::FlowState failed = state;  // the last iterate of a step that did not converge
+  const double limit = context.deck.numerics.repartition_imbalance;
+  const double partition_imbalance = context.partition_imbalance;
   const double end = run.end_time;
   const double tiny = 1e-12 * std::max(1.0, end);
 
@@ -133,16 +135,31 @@ RunSummary run_time_loop(const TimeLoopContext& context, FlowSolver& flow, run::
     // The snapshot records the next dt, so a restart continues exactly as this run would.
     const bool stop = run::stop_requested(context.domain.layout.comm());
     const bool finished = time >= end - tiny;  // the final state is always written
+    bool repartition = false;
     if (context.output.snapshot_due(time) || stop || finished) {
-      run_log.snapshot(time, context.output.write(state, time, step, dt_try, controller.dt(),
-                                                  controller.memory()));
+      const std::string written = context.output.write(state, time, step, dt_try, controller.dt(),
+                                                       controller.memory());
+      run_log.snapshot(time, written);
       const auto& comm = context.domain.layout.comm();
-      if (comm.size() > 1)
-        context.log(fmt::format("t = {:.6g} s: {}", time,
-                                run::rank_balance_line(run::gather_rank_counters(
-                                    comm, rank_counters(context.domain, state)))));
+      if (comm.size() > 1) {
+        const auto ranks = run::gather_rank_counters(comm, rank_counters(context.domain, state));
+        context.log(fmt::format("t = {:.6g} s: {}", time, run::rank_balance_line(ranks)));
+        // numerics.repartition_imbalance: the same counts on every rank, so all agree.
+        const double imbalance = run::work_imbalance(ranks);
+        if (limit > 0.0 && imbalance > partition_imbalance + limit && !stop && !finished) {
+          context.log(fmt::format("t = {:.6g} s: the largest rank's work is {:.1f} % above the "
+                                  "mean, {:.1f} % when this partition was made "
+                                  "(numerics.repartition_imbalance = {:.3g}): repartitioning by "
+                                  "work from {}",
+                                  time, 100.0 * imbalance, 100.0 * partition_imbalance, limit,
+                                  written));
+          summary.repartition_from = written;
+          repartition = true;
+        }
+      }
     }
     context.progress.update(time, dt_try, result.iterations);
+    if (repartition) break;
     if (stop) {
       summary.interrupted = true;
       context.log(fmt::format("t = {:.6g} s: stopped by signal {}; final snapshot written", time,
@@ -153,7 +170,7 @@ RunSummary run_time_loop(const TimeLoopContext& context, FlowSolver& flow, run::
   context.progress.finish();
   summary.time = time;
   summary.steps = step - start_step;
-  summary.completed = summary.failure.empty() && !summary.interrupted;
+  summary.completed = summary.failure.empty() && !summary.interrupted && summary.repartition_from.empty();
   return summary;
 }
 

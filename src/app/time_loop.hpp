@@ -11,7 +11,9 @@
 // Every redone step is logged; each snapshot and the dt changes before it as run_log.hpp says,
 // then, on more than one rank, the balance of the ranks since the run started
 // (src/run/rank_balance.hpp).
-// A step that fails at run.dt_min stops the run.
+// A step that fails at run.dt_min stops the run. On more than one rank with
+// numerics.repartition_imbalance set, a snapshot after which the ranks' work is out of balance
+// by more than it ends the loop (summary.repartition_from).
 
 #include <functional>
 #include <string>
@@ -36,6 +38,9 @@ struct RunSummary {
   double last_dt = 0.0;
   bool interrupted = false;  // SIGINT/SIGTERM: stopped after writing a final snapshot
   std::string failure;       // why the run stopped early
+  // Stopped for numerics.repartition_imbalance after writing this snapshot: the caller
+  // partitions anew and continues from it.
+  std::string repartition_from;
 };
 
 struct TimeLoopContext {
@@ -46,6 +51,10 @@ struct TimeLoopContext {
   run::ProgressLine& progress;
   std::function<void(const std::string&)> log;  // rank 0 prints
   bool verbose = false;  // --verbose: log every change of dt (run_log.hpp)
+  // The work imbalance (run::work_imbalance) a partition by work had when it was made, which
+  // numerics.repartition_imbalance counts from (a partition cannot balance better than its
+  // cells allow); 0 for a partition by cells.
+  double partition_imbalance = 0.0;
 };
 
 // From `start_time` (step number `start_step`) with a first step of `dt_start`. A SIGINT or

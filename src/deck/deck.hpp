@@ -156,6 +156,7 @@ struct Numerics {
   double pressure_tolerance = 1e-4;      // relative, per outer iteration
   double momentum_tolerance = 1e-4;      // relative, per outer iteration
   std::string partition_weights = "cells";  // cells | work
+  double repartition_imbalance = 0.0;  // 0: off; else repartition by work above this imbalance
 };
 
 struct Output {

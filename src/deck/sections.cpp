@@ -384,6 +384,16 @@ const Section<Numerics>& numerics_section() {
           .doc("What the partition over ranks balances: fluid cells, or work (a fluid cell "
                "holding solids weighs as much as it costs against a gas-only one, from the "
                "initial state or the restart snapshot's)."),
+      key(&Numerics::repartition_imbalance, "repartition_imbalance").unit("-").init()
+          .within(0.0, 10.0)
+          .doc("On more than one rank, 0: the partition stays as the run started. x > 0: at each "
+               "snapshot, when the largest rank's work above the ranks' mean (its fluid cells weighed "
+               "as partition_weights = \"work\" weighs them, from the current state) has grown "
+               "by more than the fraction x since the partition was made, the ranks partition "
+               "the domain anew by "
+               "that work and continue from the snapshot just written, which carries the state "
+               "to its new owners. It moves cells between ranks, not the equations: the "
+               "continuation agrees with one on the old partition to the solver tolerance."),
   }};
   return s;
 }

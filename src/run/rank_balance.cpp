@@ -1,6 +1,8 @@
 // Per-rank counters of cells and seconds, gathered and shown (rank_balance.hpp).
 #include "src/run/rank_balance.hpp"
 
+#include "src/run/work_weights.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -42,6 +44,16 @@ double solves(const RankCounters& r) { return r.seconds.solves; }
 double waits(const RankCounters& r) { return r.seconds.waits; }
 
 }  // namespace
+
+double work_imbalance(const std::vector<RankCounters>& ranks) {
+  double largest = 0.0, total = 0.0;
+  for (const auto& r : ranks) {
+    const double work = gas_cell_work * (r.fluid_cells - r.solids_cells) + solids_cell_work * r.solids_cells;
+    largest = std::max(largest, work);
+    total += work;
+  }
+  return total > 0.0 ? largest / (total / static_cast<double>(ranks.size())) - 1.0 : 0.0;
+}
 
 double RankCounters::wait_share() const {
   const double busy = seconds.assembly + seconds.solves;
@@ -95,9 +107,10 @@ std::string rank_balance_line(const std::vector<RankCounters>& ranks) {
     most = std::max(most, r.wait_share());
   }
   return fmt::format("ranks: fluid cells max/min {}, solids cells {}, assembly {}, solves {}; "
-                     "wait {:.1f}–{:.1f} %",
+                     "wait {:.1f}–{:.1f} %; work max {:.1f} % above the mean",
                      ratio(ranks, fluid), ratio(ranks, solids), ratio(ranks, assembly),
-                     ratio(ranks, solves), 100.0 * least, 100.0 * most);
+                     ratio(ranks, solves), 100.0 * least, 100.0 * most,
+                     100.0 * work_imbalance(ranks));
 }
 
 }  // namespace bagnold::run

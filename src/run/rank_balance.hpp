@@ -38,12 +38,18 @@ RankCounters count_rank(const parallel::Layout& layout, const FlowState& state,
 std::vector<RankCounters> gather_rank_counters(const parallel::Communicator& comm,
                                                const RankCounters& mine);
 
+// The largest rank's work over the ranks' mean, less 1 (0.1: 10 % above the mean), each rank's
+// work its fluid cells weighed as the work-weighted partition weighs them (work_weights.hpp);
+// 0 for no ranks or no work.
+double work_imbalance(const std::vector<RankCounters>& ranks);
+
 // The table printed at the end of a run: a row per rank, then the max/min ratio of each column
 // ("inf" when the smallest is 0).
 std::string rank_balance_table(const std::vector<RankCounters>& ranks);
 // One line for the run log: the max/min ratios of fluid cells, solids cells, assembly and solve
-// seconds, and the range of the ranks' wait shares ("ranks: fluid cells max/min 1.00, solids
-// cells 2.31, assembly 1.85, solves 1.10; wait 2.1–22.5 %").
+// seconds, the range of the ranks' wait shares and the work imbalance now ("ranks: fluid cells
+// max/min 1.00, solids cells 2.31, assembly 1.85, solves 1.10; wait 2.1–22.5 %; work max
+// 9.1 % above the mean").
 std::string rank_balance_line(const std::vector<RankCounters>& ranks);
 
 }  // namespace bagnold::run

@@ -52,6 +52,22 @@ TEST(RankBalance, ThresholdExcludesTraces) {
   EXPECT_EQ(run::count_rank(box.domain.layout, box.state, 0.5, {}).solids_cells, 0.0);
 }
 
+TEST(RankBalance, WorkImbalanceWeighsSolidsCellsAsThePartitionDoes) {
+  // Work 10 per gas cell, 12 per solids cell (work_weights.hpp).
+  run::RankCounters gas, bed;
+  gas.fluid_cells = 800;  // all gas: 8000
+  bed.fluid_cells = 800;
+  bed.solids_cells = 800;  // all solids: 9600
+  EXPECT_NEAR(run::work_imbalance({gas, bed}), 9600.0 / 8800.0 - 1.0, 1e-15);
+  EXPECT_NEAR(run::work_imbalance({bed, bed}), 0.0, 1e-15);
+  run::RankCounters fewer = bed;
+  fewer.fluid_cells = 700;
+  fewer.solids_cells = 700;  // 8400 against 9600: the largest is 6.7 % above the mean 9000
+  EXPECT_NEAR(run::work_imbalance({fewer, bed}), 9600.0 / 9000.0 - 1.0, 1e-15);
+  EXPECT_EQ(run::work_imbalance({}), 0.0);
+  EXPECT_EQ(run::work_imbalance({run::RankCounters{}}), 0.0);
+}
+
 TEST(RankBalance, TableGivesMaxOverMin) {
   const std::vector<run::RankCounters> ranks = {{10, 8, 0, {3.0, 1.0, 1.0}},
                                                 {12, 8, 4, {6.0, 2.0, 0.2}}};
@@ -62,7 +78,7 @@ TEST(RankBalance, TableGivesMaxOverMin) {
   EXPECT_NE(table.find("25.0"), std::string::npos) << "rank 0 waits 1 s of 4\n" << table;
   EXPECT_EQ(run::rank_balance_line(ranks),
             "ranks: fluid cells max/min 1.00, solids cells inf, assembly 2.00, solves 2.00; "
-            "wait 2.5–25.0 %");
+            "wait 2.5–25.0 %; work max 4.8 % above the mean");  // work 80 and 88
 }
 
 }  // namespace

@@ -109,7 +109,7 @@ StepResult FlowSolver::advance(run::FlowState& state, const run::FlowState& old,
       result.converged = true;
       return result;
     }
-    if (m_settings.detect_stall && stall_watch.stalled(iteration, largest)) {
+    if (m_settings.detect_stall && stall_watch.has_stalled_after(iteration, largest)) {
       result.stalled = true;
       return result;
     }

@@ -103,7 +103,7 @@ class StallWatch {
   static constexpr int stall_interval = 5;
   // Whether the step has stalled, given the largest residual of outer iteration `iteration`
   // (1, 2, ...; called once per iteration, in order).
-  bool stalled(int iteration, double largest) {
+  bool has_stalled_after(int iteration, double largest) {
     if (iteration % stall_interval != 0) return false;
     const bool stalled = iteration > 2 * stall_interval && !(largest < m_checkpoint);
     m_checkpoint = largest;

@@ -687,8 +687,8 @@ void Translator::numerics_and_output() {
     const Record* r = take("detect_stall");
     const auto stall = r ? as_logical(*r) : std::optional<bool>(true);
     if (!stall) refuse(*r, "'" + r->value + "' is not a logical");
-    else out_ << "detect_stall = " << (*stall ? "true" : "false") << "   # MFIX detect_stall"
-              << (r ? "" : " (MFIX's default .T.)") << "\n";
+    out_ << "detect_stall = " << (stall.value_or(true) ? "true" : "false") << "   # MFIX detect_stall"
+         << (r && stall ? "" : " (MFIX's default .T.)") << "\n";
   }
   if (const auto fac = real("dt_fac", {}, 1.0)) {
     if (*fac <= 0.0 || *fac > 1.0) refuse(*take("dt_fac"), "dt_fac must be in (0, 1]");

@@ -112,9 +112,12 @@ RunSummary run_time_loop(const TimeLoopContext& context, FlowSolver& flow, run::
                               solver::equation_name(worst), value, result.first_largest)
                 : fmt::format("the outer iteration stalled: the {} equation's normalized residual "
                               "{:.3g} stayed above numerics.tolerance = {:.3g} (the step's largest "
-                              "was {:.3g} in its first outer iteration)",
+                              "was {:.3g} in its first outer iteration) over {} outer iterations "
+                              "({})",
                               solver::equation_name(worst), value, context.deck.numerics.tolerance,
-                              result.first_largest);
+                              result.first_largest, result.iterations,
+                              result.stalled ? "numerics.detect_stall: it stopped falling"
+                                             : "numerics.max_outer_iterations");
         summary.failure = fmt::format(
             "the time step fell below run.dt_min = {:.3g} s at t = {:.6g} s; {}, worst in {}; the "
             "failed iterate is in {}",

@@ -128,6 +128,31 @@ TEST(FlowSolver, AFailedLinearSolveFailsTheStepWithItsReason) {
   EXPECT_TRUE(fine.failure.empty());
 }
 
+TEST(FlowSolver, DetectStallEndsAStepWhoseResidualStopsFalling) {
+  // The lid-driven cavity with an outer tolerance no iterate reaches (1e-12, below what the
+  // linear solves' 1e-4 leave): the residual falls, then levels off. With numerics.detect_stall
+  // the step stops there, at a multiple of 5 from 15 on (StallWatch); without it, it runs on to
+  // max_outer_iterations.
+  const std::string deck =
+      unit_deck(4, 1, 4, "\"y\"", 0.0,
+                gas_only() + "[[boundary]]\nname = \"lid\"\ntype = \"moving_wall\"\nface = \"z+\"\n"
+                             "wall_velocity = [1.0, 0.0, 0.0]\n"
+                             "[numerics]\ntolerance = 1e-12\nmax_outer_iterations = 400\n");
+  Stepper watched(deck, {"numerics.detect_stall=true"});
+  const auto stalled = watched.flow.advance(watched.c.state, watched.c.old, 1e-2);
+  EXPECT_FALSE(stalled.converged);
+  EXPECT_TRUE(stalled.stalled);
+  EXPECT_TRUE(stalled.failure.empty());
+  EXPECT_GE(stalled.iterations, 15);
+  EXPECT_LT(stalled.iterations, 400);
+  EXPECT_EQ(stalled.iterations % 5, 0);
+  Stepper plain(deck);
+  const auto ran_on = plain.flow.advance(plain.c.state, plain.c.old, 1e-2);
+  EXPECT_FALSE(ran_on.converged);
+  EXPECT_FALSE(ran_on.stalled);
+  EXPECT_EQ(ran_on.iterations, 400);
+}
+
 TEST(FlowSolver, AFailedRowIsLocatedInAFluidCellAndItsOpeningByName) {
   // An outlet on the bottom face: its z-faces are owned by the boundary cells below the fluid.
   const std::string outlet =

@@ -183,7 +183,7 @@ TEST(StallWatch, AStepStallsWhenItsLargestResidualHasNotFallenOverFiveIterations
   const auto first_stall = [](auto residual_at) {
     solver::StallWatch watch;
     for (int it = 1; it <= 100; ++it)
-      if (watch.stalled(it, residual_at(it))) return it;
+      if (watch.has_stalled_after(it, residual_at(it))) return it;
     return 0;
   };
   EXPECT_EQ(first_stall([](int it) { return std::pow(0.95, it); }), 0);  // slow but falling

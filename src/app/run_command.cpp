@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cstdio>
 #include <optional>
+#include <utility>
 
 #include "src/run/progress.hpp"
 #include "src/run/stop_request.hpp"
@@ -111,17 +112,20 @@ int run_command(const DeckArguments& args) {
     RunSummary result;
     std::string rank_table;    // the ranks' balance at the end, on more than one rank
     std::string directory;     // where the run writes
-    std::vector<int> weights;  // set when the run repartitions (numerics.repartition_imbalance)
+    std::vector<int> weights;      // the work weights of a partition by work, else empty
+    std::vector<int> repartition;  // the next segment's weights (numerics.repartition_imbalance)
+    const auto partition_by_work = [&](std::vector<int> by) {
+      weights = std::move(by);
+      prepared.domain = std::make_unique<parallel::Domain>(deck, comm, weights);
+      say(run::work_partition_text(*prepared.domain, weights));
+    };
     // One segment per partition: the run's start, then one after each repartition, which
     // continues from the snapshot the last segment ended with.
     for (bool first_segment = true;; first_segment = false) {
       // The state on the partition by fluid cells; with numerics.partition_weights = "work" on
       // more than one rank (or after a repartition), the partition weighted by that state's work
       // (work_weights.hpp), and the state again on it.
-      if (!weights.empty()) {
-        prepared.domain = std::make_unique<parallel::Domain>(deck, comm, weights);
-        say(run::work_partition_text(*prepared.domain, weights));
-      }
+      if (!repartition.empty()) partition_by_work(std::exchange(repartition, {}));
       run::FlowState state(0);
       StartPoint start;
       for (bool weighted = !weights.empty();; weighted = true) {
@@ -137,9 +141,7 @@ int run_command(const DeckArguments& args) {
           }
         }
         if (weighted || deck.numerics.partition_weights != "work" || comm.size() == 1) break;
-        weights = run::work_weights(*prepared.domain, state, solver::solids_threshold);
-        prepared.domain = std::make_unique<parallel::Domain>(deck, comm, weights);
-        say(run::work_partition_text(*prepared.domain, weights));
+        partition_by_work(run::work_weights(*prepared.domain, state, solver::solids_threshold));
       }
       const parallel::Domain& domain = *prepared.domain;
       if (first_segment && !snapshot.empty()) {
@@ -192,22 +194,16 @@ int run_command(const DeckArguments& args) {
                                     partition_imbalance};
       const auto segment = run_time_loop(context, flow, state, start.time, start.step, start.dt,
                                          start.time_step_memory);
-      result.steps += segment.steps;
-      result.outer_iterations += segment.outer_iterations;
-      result.redone_steps += segment.redone_steps;
-      result.time = segment.time;
-      result.last_dt = segment.last_dt;
-      result.completed = segment.completed;
-      result.interrupted = segment.interrupted;
-      result.failure = segment.failure;
+      result.continue_with(segment);
       if (segment.repartition_from.empty()) {
         if (comm.size() > 1)
           rank_table = run::rank_balance_table(run::gather_rank_counters(comm, rank_counters(domain, state)));
         break;
       }
       // Partition anew by the state's work; the next segment reads the state back from the
-      // snapshot just written, each rank its new cells.
-      weights = run::work_weights(domain, state, solver::solids_threshold);
+      // snapshot just written, each rank its new cells (the flow solver, output writer and
+      // monitor of this segment, which hold the old partition, go out of scope first).
+      repartition = run::work_weights(domain, state, solver::solids_threshold);
       snapshot = segment.repartition_from;
     }
     for (const auto& option : solver::PetscSession::unused_options())

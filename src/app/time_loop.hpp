@@ -41,6 +41,19 @@ struct RunSummary {
   // Stopped for numerics.repartition_imbalance after writing this snapshot: the caller
   // partitions anew and continues from it.
   std::string repartition_from;
+
+  // The run so far followed by `later`, a segment after it: counts added, its outcome kept.
+  void continue_with(const RunSummary& later) {
+    steps += later.steps;
+    outer_iterations += later.outer_iterations;
+    redone_steps += later.redone_steps;
+    time = later.time;
+    last_dt = later.last_dt;
+    completed = later.completed;
+    interrupted = later.interrupted;
+    failure = later.failure;
+    repartition_from = later.repartition_from;
+  }
 };
 
 struct TimeLoopContext {

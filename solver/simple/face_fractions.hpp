@@ -38,8 +38,15 @@ inline double face_fraction(const Discretization& discretization, const run::Flo
   return (eps[static_cast<std::size_t>(local)] * wn + eps[static_cast<std::size_t>(n)] * wc) / (wc + wn);
 }
 
-double carried_fraction(const Discretization& discretization, const run::FlowState& state,
-                        Phase phase, int local, int d);
+// Inline: called for every face several times per outer iteration.
+inline double carried_fraction(const Discretization& discretization, const run::FlowState& state,
+                               Phase phase, int local, int d) {
+  if (phase == gas) return face_fraction(discretization, state, gas, local, d);
+  const int n = discretization.layout().neighbour(local, 2 * d + 1);
+  const double u = state.solids_velocity[static_cast<std::size_t>(d)][static_cast<std::size_t>(local)];
+  const int upwind = (u >= 0.0 || n < 0) ? local : n;
+  return state.solids_fraction[static_cast<std::size_t>(upwind)];
+}
 // Whether the solids momentum on the face of `local` along d is solved.
 inline bool solids_present(const Discretization& discretization, const run::FlowState& state,
                            int local, int d) {

@@ -38,7 +38,7 @@ MomentumPredictor::MomentumPredictor(const deck::Deck& deck, const Discretizatio
   const MPI_Comm comm = discretization.layout().comm().get();
   KrylovSettings krylov;
   krylov.ksp_type = "bcgs";
-  krylov.pc_type = "bjacobi";
+  krylov.pc_type = deck.numerics.momentum_preconditioner;
   krylov.relative_tolerance = deck.numerics.momentum_tolerance;
   const char* prefixes[2][3] = {{"momentum_x_", "momentum_y_", "momentum_z_"},
                                 {"solids_momentum_x_", "solids_momentum_y_", "solids_momentum_z_"}};

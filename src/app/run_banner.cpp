@@ -54,8 +54,9 @@ std::string run_banner(const deck::Deck& deck, const grid::BoundaryRegions& regi
     out += "solids: none (gas only)\n";
   }
   const auto& n = deck.numerics;
-  out += fmt::format("numerics: {}, convection {}, viscosity average {}, pressure preconditioner {}\n",
-                     n.algorithm, n.convection, n.viscosity_average, n.pressure_preconditioner);
+  out += fmt::format("numerics: {}, convection {}, viscosity average {}, pressure preconditioner {}, momentum preconditioner {}\n",
+                     n.algorithm, n.convection, n.viscosity_average, n.pressure_preconditioner,
+                     n.momentum_preconditioner);
   return out;
 }
 

@@ -380,6 +380,12 @@ const Section<Numerics>& numerics_section() {
           .within(1e-14, 0.5).doc("Relative tolerance of the pressure-correction solve."),
       key(&Numerics::momentum_tolerance, "momentum_tolerance").unit("-").init()
           .within(1e-14, 0.5).doc("Relative tolerance of the momentum solves."),
+      key(&Numerics::momentum_preconditioner, "momentum_preconditioner").init()
+          .one_of({"jacobi", "bjacobi"})
+          .doc("Preconditioner of the momentum solves (BiCGStab): point Jacobi (the same on any "
+               "number of ranks, and no factorization per solve) or block Jacobi with ILU(0) on "
+               "each rank's block. Either changes how a solve reaches momentum_tolerance, not "
+               "what it converges to."),
       key(&Numerics::partition_weights, "partition_weights").init().one_of({"cells", "work"})
           .doc("What the partition over ranks balances: fluid cells, or work (a fluid cell "
                "holding solids weighs as much as it costs against a gas-only one, from the "

@@ -16,7 +16,7 @@ std::vector<CoefficientSpec> DenseLimit::specs() {
       real_spec("quasi_static_scale", "-", defaults.quasi_static_scale, 0.0, 1e3,
                 "s [-]: multiplies α_QS(μ) (App. A Table II) in the quasi-static pressure "
                 "s α_QS (k/d) (φ − φ_c + δ)^{2/3} (App. A Eq. 8 form); 0 switches it off."),
-      onset_smoothing_spec(),
+      onset_smoothing_spec(defaults.onset_smoothing),
   };
 }
 

@@ -60,10 +60,10 @@ Constants read_constants(const Coefficients& c) {
            real_spec("alpha_int", "-", Constants{}.intermediate, 0.0, 10.0,
                      "α_int [-]: intermediate pressure p d/k = α_int γ̂^{1/2}, App. A Eq. 9, "
                      "Table II."),
-           onset_smoothing_spec()},
+           onset_smoothing_spec(Constants{}.onset_smoothing)},
           blended::stress_ratio_specs("App. A Eq. 11", "App. A Eq. 12", "Table II"),
           DiluteLimit::specs(DiluteLimit::Anchor::tangent),
-          ViscosityLimits::specs()}),
+          ViscosityLimits::specs(rheology_max_viscosity)}),
      .make = [](const Coefficients& c) -> std::unique_ptr<SolidsStressModel> {
        return std::make_unique<SteadyShear>(
            read_constants(c), DiluteLimit::read(c, DiluteLimit::Anchor::tangent),

@@ -102,9 +102,9 @@ Constants read_constants(const Coefficients& c) {
            real_spec("alpha_4", "-", Constants{}.cohesive_rate, 1e-9, 10.0,
                      "α₄ [-]: cohesive-to-inertial scaled shear rate α₄√Bo* in η, App. D Eq. 19, "
                      "Table I."),
-           onset_smoothing_spec()},
+           onset_smoothing_spec(Constants{}.onset_smoothing)},
           blended::stress_ratio_specs("App. D Eq. 14", "App. D Eq. 15", "Table I"),
-          ViscosityLimits::specs()}),
+          ViscosityLimits::specs(rheology_max_viscosity)}),
      .make = [](const Coefficients& c) -> std::unique_ptr<SolidsStressModel> {
        return std::make_unique<SteadyShearCohesive>(read_constants(c), ViscosityLimits::read(c));
      }});

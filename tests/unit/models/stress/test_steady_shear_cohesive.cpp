@@ -111,8 +111,8 @@ TEST(SteadyShearCohesive, ItsNonRefitConstantsHaveTheSteadyShearDefaults) {
   const models::steady_shear::Constants a;
   const models::steady_shear_cohesive::Constants d;
   EXPECT_EQ(d.onset_smoothing, a.onset_smoothing);
-  EXPECT_EQ(d.onset_smoothing, models::default_onset_smoothing);
-  EXPECT_EQ(d.onset_smoothing, 1e-2);  // the value the decks and docs/models.md give
+  EXPECT_EQ(d.onset_smoothing, models::rheology_onset_smoothing);
+  EXPECT_EQ(d.onset_smoothing, 1e-4);  // the value the decks and docs/models.md give
   // The stress-ratio constants are one struct with one set of defaults (App. A Table II).
   EXPECT_EQ(d.stress_ratio.transition_inertial_number, 0.32);
   EXPECT_EQ(d.stress_ratio.transition_inertial_number, a.stress_ratio.transition_inertial_number);
@@ -143,7 +143,8 @@ TEST(SteadyShearCohesive, AtZeroBondNumberWithAppendixATablesIsSteadyShearExactl
     ASSERT_GT(c.cohesive_1, 0.0);  // the cohesive constants are there, only Bo* is 0
     ASSERT_GT(c.cohesive_2, 0.0);
     ASSERT_GT(c.cohesive_stress_ratio, 0.0);
-    const models::ViscosityLimits limits;
+    models::ViscosityLimits limits;  // the rheologies' declared defaults
+    limits.max_viscosity = models::rheology_max_viscosity;
     const auto cohesive = [&](double phi, double rate, double) {
       return blended::point_stress(phi, rate, dry, c, limits);
     };
@@ -168,7 +169,8 @@ TEST(SteadyShearCohesive, AtZeroBondNumberItIsTheBlendedRheologyWithAppendixDTab
   for (const double mu : {0.1, 0.3, 0.5}) {
     const Material dry = powder(0.0, mu);
     const auto c = models::steady_shear_cohesive::constants_at(mu, {});
-    const models::ViscosityLimits limits;
+    models::ViscosityLimits limits;  // the rheologies' declared defaults
+    limits.max_viscosity = models::rheology_max_viscosity;
     const auto blended_d = [&](double phi, double rate, double) {
       return blended::point_stress(phi, rate, dry, c, limits);
     };

@@ -1,5 +1,6 @@
 #include "solver/strain_rate.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace bagnold::solver {
@@ -9,7 +10,7 @@ using grid::CellKind;
 void compute_strain_rate(const Discretization& discretization,
                          const std::array<std::vector<double>, 3>& velocity,
                          std::vector<double>& strain_rate, std::vector<double>& divergence,
-                         const std::vector<bool>& no_slip_regions) {
+                         const std::vector<bool>& wall_shear_cells) {
   const auto& layout = discretization.layout();
   const auto local = static_cast<std::size_t>(layout.local_count());
   strain_rate.assign(local, 0.0);
@@ -20,17 +21,16 @@ void compute_strain_rate(const Discretization& discretization,
       const int minus = layout.neighbour(l, 2 * b), plus = layout.neighbour(l, 2 * b + 1);
       const double width = discretization.width(l, b);
       // What each side contributes: a fluid neighbour its centre value, half the two widths
-      // away (periodic wrap: a width away); a stationary no-slip wall flagged in no_slip_regions
-      // the ghost value −u_c a width away (the wall's zero half a cell away, as MFIX's ghost
-      // cells put the wall shear into γ̇); anything else the cell's own value at no distance
-      // (a one-sided difference).
+      // away (periodic wrap: a width away); a wall cell flagged in wall_shear_cells the ghost
+      // value −u_c a width away (the wall's zero half a cell away, as MFIX's ghost cells put
+      // the wall shear into γ̇); anything else the cell's own value at no distance (a one-sided
+      // difference).
       enum class Side { fluid, wall, none };
       auto side_of = [&](int neighbour) {
         if (neighbour < 0) return Side::none;
         if (layout.kind(neighbour) == CellKind::fluid) return Side::fluid;
-        if (no_slip_regions.empty() || layout.kind(neighbour) != CellKind::boundary) return Side::none;
-        const int region = layout.region(neighbour);
-        return region >= 0 && no_slip_regions[static_cast<std::size_t>(region)] ? Side::wall : Side::none;
+        return !wall_shear_cells.empty() && wall_shear_cells[static_cast<std::size_t>(neighbour)]
+                   ? Side::wall : Side::none;
       };
       auto distance = [&](Side side, int neighbour) {
         return side == Side::fluid ? 0.5 * (width + discretization.width(neighbour, b))
@@ -66,6 +66,40 @@ void compute_strain_rate(const Discretization& discretization,
   }
   parallel::exchange_halo<double>(layout, strain_rate);
   parallel::exchange_halo<double>(layout, divergence);
+}
+
+std::vector<bool> wall_shear_cells(const parallel::Domain& domain,
+                                   const std::vector<bool>& wall_shear_regions, bool beside_openings) {
+  std::vector<bool> flagged;
+  if (std::find(wall_shear_regions.begin(), wall_shear_regions.end(), true) == wall_shear_regions.end())
+    return flagged;
+  const auto& layout = domain.layout;
+  const auto& grid = domain.grid;
+  auto is_opening = [&](grid::Natural n) {
+    if (domain.flags.kind[static_cast<std::size_t>(n)] != CellKind::boundary) return false;
+    const int region = domain.flags.region[static_cast<std::size_t>(n)];
+    if (region < 0) return false;
+    const auto type = domain.regions.types[static_cast<std::size_t>(region)];
+    return type == grid::BoundaryType::pressure_outflow || type == grid::BoundaryType::pressure_inflow ||
+           type == grid::BoundaryType::mass_inflow;
+  };
+  flagged.assign(static_cast<std::size_t>(layout.local_count()), false);
+  for (int l = 0; l < layout.local_count(); ++l) {
+    if (layout.kind(l) != CellKind::boundary) continue;
+    const int region = layout.region(l);
+    if (region < 0 || !wall_shear_regions[static_cast<std::size_t>(region)]) continue;
+    bool beside_opening = false;
+    if (!beside_openings) {
+      const grid::Index3 ijk = layout.index3(l);
+      for (int face = 0; face < 6 && !beside_opening; ++face) {
+        grid::Index3 offset{0, 0, 0}, to{};
+        offset[static_cast<std::size_t>(face / 2)] = face % 2 == 0 ? -1 : 1;
+        beside_opening = grid.step(ijk, offset, to) && is_opening(grid.natural(to));
+      }
+    }
+    flagged[static_cast<std::size_t>(l)] = !beside_opening;
+  }
+  return flagged;
 }
 
 }  // namespace bagnold::solver

@@ -37,9 +37,10 @@ Closures::Closures(const deck::Deck& deck, const Discretization& discretization)
     // A stationary wall whose law does not let the solids slip puts its shear into γ̇.
     if (deck.numerics.wall_shear_in_strain_rate) {
       const auto laws = solids_wall_laws(deck, domain.regions, *m_stress);
+      std::vector<bool> regions;
       for (std::size_t r = 0; r < laws.size(); ++r)
-        m_wall_shear_regions.push_back(domain.regions.types[r] == grid::BoundaryType::no_slip_wall &&
-                                       !laws[r]->slips());
+        regions.push_back(domain.regions.types[r] == grid::BoundaryType::no_slip_wall && !laws[r]->slips());
+      m_wall_shear_cells = wall_shear_cells(domain, regions, deck.numerics.wall_shear_beside_openings);
     }
   }
   // Outflow cells whose P_s is their fluid neighbour's (solids_pressure = "zero-gradient").
@@ -99,7 +100,7 @@ void Closures::evaluate_solids_stress(const Discretization& discretization, run:
   if (!m_stress) return;
 
   compute_strain_rate(discretization, state.solids_velocity, fields.strain_rate,
-                      fields.divergence[solids], m_wall_shear_regions);
+                      fields.divergence[solids], m_wall_shear_cells);
   const double weight = m_relaxation_time > 0.0 ? dt / m_relaxation_time : 0.0;
   const bool transported = m_stress->granular_energy() != nullptr;
   m_cells.clear();

@@ -148,6 +148,7 @@ struct Numerics {
   double vacant_fraction = 1e-8;         // ε_s at or below which Θ = 0 (granular energy equation)
   double relax_velocity = 0.7;           // α_u
   bool wall_shear_in_strain_rate = true;  // no-slip walls' shear in the wall cells' γ̇
+  bool wall_shear_beside_openings = true;  // false: not from wall cells beside an opening (MFIX)
   std::string viscosity_average = "arithmetic";  // arithmetic | harmonic
   double solids_bulk_viscosity_ratio = 0.0;  // r μ_s added to the closure's λ_s
   double pressure_shear_rate_relaxation_time = 0.0;  // τ_P [s]: P_s at γ̇ relaxed over τ_P

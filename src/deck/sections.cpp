@@ -349,6 +349,15 @@ const Section<Numerics>& numerics_section() {
           .doc("Whether a stationary no-slip solids wall's shear enters the closure's strain rate "
                "in the cells beside it (ghost value −u_c, as MFIX's ghost cells and the report's "
                "OpenFOAM code do), instead of one-sided interior differences (false)."),
+      key(&Numerics::wall_shear_beside_openings, "wall_shear_beside_openings").init()
+          .doc("With wall_shear_in_strain_rate, whether a no-slip wall cell that has an opening "
+               "(pressure outflow or inflow, mass inflow) as a face neighbour puts its shear into "
+               "the strain rate too. false: such a wall cell holds +u_c, as a free-slip wall, in "
+               "the strain rate only (the momentum equations keep the no-slip wall), which is "
+               "what MFIX's SET_FLAGS does to every wall cell beside a flow boundary; it lowers "
+               "the strain rate, and raises the frictional viscosity, in the cells beside an "
+               "orifice's rim. import-mfix sets false; on the 10 mm MFIX bin it moves the "
+               "discharge by -5 % (docs/import-mfix.md)."),
       key(&Numerics::viscosity_average, "viscosity_average").init()
           .one_of(choice_names(viscosity_average_choices))
           .doc("How the viscosity on a control-volume edge is made from the four cells around it: "

@@ -75,7 +75,7 @@ TEST(StrainRate, FlaggedNoSlipWallPutsItsShearIntoTheWallCells) {
   const double speed = 0.2, width = 0.01;
   for (auto& value : u[0]) value = speed;
   const solver::Discretization discretization(domain);
-  const std::vector<bool> flagged(domain.regions.regions.size(), true);
+  const auto flagged = solver::wall_shear_cells(domain, std::vector<bool>(domain.regions.regions.size(), true), true);
   std::vector<double> with_wall, without_wall, divergence;
   solver::compute_strain_rate(discretization, u, with_wall, divergence, flagged);
   solver::compute_strain_rate(discretization, u, without_wall, divergence);
@@ -86,6 +86,40 @@ TEST(StrainRate, FlaggedNoSlipWallPutsItsShearIntoTheWallCells) {
     const double expected = speed / width * std::sqrt((z_wall ? 1.0 : 0.0) + (y_wall ? 1.0 : 0.0));
     EXPECT_NEAR(with_wall[static_cast<std::size_t>(l)], expected, 1e-9) << "cell " << l;
     EXPECT_NEAR(without_wall[static_cast<std::size_t>(l)], 0.0, 1e-9) << "cell " << l;
+  }
+}
+
+// numerics.wall_shear_beside_openings = false (MFIX's SET_FLAGS): a floor with a pressure outflow
+// under its first column (x < 1 cm). A plug u_x = U: the floor cells under x in [1, 2) cm touch
+// the outflow cell beside them and put no shear into γ̇ of the fluid cells above; the floor
+// under x ≥ 2 cm does, as before; above the outflow there is no wall at all. With the default
+// (true) the floor under [1, 2) cm is a wall like the rest.
+TEST(StrainRate, WallCellsBesideAnOpeningCanLeaveTheirShearOut) {
+  const std::string outlet =
+      "[[boundary]]\nname = \"orifice\"\ntype = \"pressure_outflow\"\nface = \"z-\"\n"
+      "min = [0.0, 0.0, -1.0]\nmax = [0.01, 0.03, 0.0]\npressure = 101325.0\n";
+  const auto deck = deck::load_deck_text(box_deck(4, 3, 4, outlet), "strain.toml", {});
+  const parallel::Domain domain(deck, parallel::Communicator());
+  const double a[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+  auto u = linear_field(domain, a);
+  const double speed = 0.2, width = 0.01;
+  for (auto& value : u[0]) value = speed;
+  const solver::Discretization discretization(domain);
+  std::vector<bool> walls(domain.regions.regions.size(), false);
+  walls[static_cast<std::size_t>(domain.regions.default_region())] = true;  // the no-slip walls
+  for (const bool beside_openings : {true, false}) {
+    const auto flagged = solver::wall_shear_cells(domain, walls, beside_openings);
+    std::vector<double> gamma_dot, divergence;
+    solver::compute_strain_rate(discretization, u, gamma_dot, divergence, flagged);
+    for (int l = 0; l < domain.layout.owned_fluid_count(); ++l) {
+      const auto ijk = domain.layout.index3(l);
+      const bool floor = ijk[2] == 0 && (ijk[0] >= 2 || (ijk[0] == 1 && beside_openings));
+      const bool lid = ijk[2] == 3, y_wall = ijk[1] == 0 || ijk[1] == 2;
+      const double expected =
+          speed / width * std::sqrt((floor || lid ? 1.0 : 0.0) + (y_wall ? 1.0 : 0.0));
+      EXPECT_NEAR(gamma_dot[static_cast<std::size_t>(l)], expected, 1e-9)
+          << "cell " << ijk[0] << ", " << ijk[1] << ", " << ijk[2] << ", beside_openings " << beside_openings;
+    }
   }
 }
 

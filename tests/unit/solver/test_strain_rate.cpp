@@ -64,16 +64,22 @@ TEST(StrainRate, ExactNextToBlockedCells) {
                a);
 }
 
+// A plug sliding along x: u_x = speed on every face, the other components 0.
+std::array<std::vector<double>, 3> plug(const parallel::Domain& domain, double speed) {
+  const double still[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+  auto u = linear_field(domain, still);
+  for (auto& value : u[0]) value = speed;
+  return u;
+}
+
 // numerics.wall_shear_in_strain_rate: a plug u_x = U sliding over a flagged no-slip wall has the
 // wall's shear in the wall cells' γ̇ (the ghost value −u_c a width away, as MFIX's ghost cells):
 // γ̇ = (U − (−U)) / (2 w) = U/w in a cell with one wall along z, 0 inside; unflagged, 0 everywhere.
 TEST(StrainRate, FlaggedNoSlipWallPutsItsShearIntoTheWallCells) {
   const auto deck = deck::load_deck_text(box_deck(3, 3, 4), "strain.toml", {});
   const parallel::Domain domain(deck, parallel::Communicator());
-  const double a[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
-  auto u = linear_field(domain, a);
   const double speed = 0.2, width = 0.01;
-  for (auto& value : u[0]) value = speed;
+  const auto u = plug(domain, speed);
   const solver::Discretization discretization(domain);
   const auto flagged = solver::wall_shear_cells(domain, std::vector<bool>(domain.regions.regions.size(), true), true);
   std::vector<double> with_wall, without_wall, divergence;
@@ -100,10 +106,8 @@ TEST(StrainRate, WallCellsBesideAnOpeningCanLeaveTheirShearOut) {
       "min = [0.0, 0.0, -1.0]\nmax = [0.01, 0.03, 0.0]\npressure = 101325.0\n";
   const auto deck = deck::load_deck_text(box_deck(4, 3, 4, outlet), "strain.toml", {});
   const parallel::Domain domain(deck, parallel::Communicator());
-  const double a[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
-  auto u = linear_field(domain, a);
   const double speed = 0.2, width = 0.01;
-  for (auto& value : u[0]) value = speed;
+  const auto u = plug(domain, speed);
   const solver::Discretization discretization(domain);
   std::vector<bool> walls(domain.regions.regions.size(), false);
   walls[static_cast<std::size_t>(domain.regions.default_region())] = true;  // the no-slip walls

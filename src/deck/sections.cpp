@@ -352,11 +352,12 @@ const Section<Numerics>& numerics_section() {
       key(&Numerics::wall_shear_beside_openings, "wall_shear_beside_openings").init()
           .doc("With wall_shear_in_strain_rate, whether a no-slip wall cell that has an opening "
                "(pressure outflow or inflow, mass inflow) as a face neighbour puts its shear into "
-               "the strain rate too. false: such a wall cell holds +u_c, as a free-slip wall, in "
-               "the strain rate only (the momentum equations keep the no-slip wall), which is "
-               "what MFIX's SET_FLAGS does to every wall cell beside a flow boundary; it lowers "
-               "the strain rate, and raises the frictional viscosity, in the cells beside an "
-               "orifice's rim. import-mfix sets false; on the 10 mm MFIX bin it moves the "
+               "the strain rate too. false: in the strain rate only, such a wall cell counts as a "
+               "free-slip wall does (a one-sided difference; the momentum equations keep the "
+               "no-slip wall), as MFIX's SET_FLAGS makes every wall cell beside a flow boundary "
+               "free-slip (MFIX's free-slip ghost holds +u_c, which halves that one-sided "
+               "difference); it lowers the strain rate, and raises the frictional viscosity, in "
+               "the cells beside an orifice's rim. import-mfix sets false; on the 10 mm MFIX bin it moves the "
                "discharge by -5 % (docs/import-mfix.md)."),
       key(&Numerics::viscosity_average, "viscosity_average").init()
           .one_of(choice_names(viscosity_average_choices))

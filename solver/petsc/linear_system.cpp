@@ -66,14 +66,21 @@ void LinearSystem::set_row(std::int64_t row, const std::int64_t* columns, const 
   const std::int64_t* pattern = m_pattern.columns.data() + begin;
   double* slots = m_values.data() + begin;
   bool set[8] = {false, false, false, false, false, false, false, false};
+  std::size_t next = 0;  // where the previous entry's slot ended
   for (int i = 0; i < count; ++i) {
-    // Rows are usually given in the pattern's own order: look there first.
-    const auto at = static_cast<std::size_t>(i);
-    std::size_t j = at < width && pattern[at] == columns[i] ? at : 0;
-    while (j < width && pattern[j] != columns[i]) ++j;
-    if (j == width) throw std::logic_error("LinearSystem::set_row: an entry outside the sparsity pattern");
+    // Rows usually list their columns in the pattern's order, or in it but for one entry (the
+    // momentum rows' diagonal comes last): search from the slot after the previous entry's,
+    // wrapping round once, so such a row costs one or two comparisons per entry.
+    std::size_t j = next < width ? next : 0;
+    std::size_t tried = 0;
+    while (tried < width && pattern[j] != columns[i]) {
+      j = j + 1 < width ? j + 1 : 0;
+      ++tried;
+    }
+    if (tried == width) throw std::logic_error("LinearSystem::set_row: an entry outside the sparsity pattern");
     slots[j] = set[j] ? slots[j] + values[i] : values[i];
     set[j] = true;
+    next = j + 1;
   }
   m_rhs_values[r] = rhs;
 }

@@ -10,11 +10,13 @@ using grid::CellKind;
 void compute_strain_rate(const Discretization& discretization,
                          const std::array<std::vector<double>, 3>& velocity,
                          std::vector<double>& strain_rate, std::vector<double>& divergence,
-                         const std::vector<bool>& wall_shear_cells) {
+                         const std::vector<bool>& wall_shear_cells, StrainTensor* tensor) {
   const auto& layout = discretization.layout();
   const auto local = static_cast<std::size_t>(layout.local_count());
   strain_rate.assign(local, 0.0);
   divergence.assign(local, 0.0);
+  if (tensor)
+    for (auto& component : *tensor) component.assign(local, 0.0);
   for (int l = 0; l < layout.owned_fluid_count(); ++l) {
     double gradient[3][3] = {};  // gradient[a][b] = ∂u_a/∂x_b
     for (int b = 0; b < 3; ++b) {
@@ -60,12 +62,15 @@ void compute_strain_rate(const Discretization& discretization,
       for (int b = 0; b < 3; ++b) {
         const double d_ab = 0.5 * (gradient[a][b] + gradient[b][a]);
         d_double_dot_d += d_ab * d_ab;
+        if (tensor && a <= b) (*tensor)[static_cast<std::size_t>(symmetric_component(a, b))][static_cast<std::size_t>(l)] = d_ab;
       }
     strain_rate[static_cast<std::size_t>(l)] = std::sqrt(2.0 * d_double_dot_d);
     divergence[static_cast<std::size_t>(l)] = gradient[0][0] + gradient[1][1] + gradient[2][2];
   }
   parallel::exchange_halo<double>(layout, strain_rate);
   parallel::exchange_halo<double>(layout, divergence);
+  if (tensor)
+    for (auto& component : *tensor) parallel::exchange_halo<double>(layout, component);
 }
 
 std::vector<bool> wall_shear_cells(const parallel::Domain& domain,

@@ -10,6 +10,7 @@
 //   D = ½ (∇u + ∇uᵀ),  γ̇ = sqrt(2 D:D) (model-notes.md: simple shear u_x = γ̇ z gives γ̇),
 //   tr D = ∂u/∂x + ∂v/∂y + ∂w/∂z (from the face velocities directly: exact discrete divergence).
 // Computed for owned fluid cells; the halo is exchanged; other cells get zero.
+// With `tensor`, also D's six components per local cell (symmetric_component orders them).
 
 #include <array>
 #include <vector>
@@ -18,10 +19,17 @@
 
 namespace bagnold::solver {
 
+// D_ab per local cell, six components: xx, yy, zz, xy, xz, yz.
+using StrainTensor = std::array<std::vector<double>, 6>;
+inline constexpr int symmetric_component(int a, int b) {
+  return a == b ? a : a + b + 2;  // (0,1) → 3, (0,2) → 4, (1,2) → 5
+}
+
 void compute_strain_rate(const Discretization& discretization,
                          const std::array<std::vector<double>, 3>& velocity,
                          std::vector<double>& strain_rate, std::vector<double>& divergence,
-                         const std::vector<bool>& wall_shear_cells = {});
+                         const std::vector<bool>& wall_shear_cells = {},
+                         StrainTensor* tensor = nullptr);
 
 // Per local cell: whether it is a boundary cell whose shear enters γ̇: a cell of a region flagged
 // in wall_shear_regions (per boundary region: a stationary wall that does not let the solids

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "solver/simple/solids_wall.hpp"
+#include "src/deck/choices.hpp"
 #include "solver/strain_rate.hpp"
 
 namespace bagnold::solver {
@@ -27,7 +28,10 @@ Closures::Closures(const deck::Deck& deck, const Discretization& discretization)
       m_gas_viscosity(deck.gas.viscosity),
       m_relaxation_time(deck.numerics.pressure_shear_rate_relaxation_time),
       m_bulk_viscosity_ratio(deck.numerics.solids_bulk_viscosity_ratio),
-      m_gas_moves(deck.gas.enabled) {
+      m_gas_moves(deck.gas.enabled),
+      m_newton(deck::choice_value(deck::viscosity_linearization_choices,
+                                  deck.numerics.viscosity_linearization, "viscosity linearization") ==
+               deck::ViscosityLinearization::newton) {
   const auto& domain = discretization.domain();
   if (deck.solids.enabled && deck.gas.enabled)
     m_drag = models::drag_registry().create(deck.models.drag.name, deck.models.drag.coefficients);
@@ -65,6 +69,8 @@ Closures::Closures(const deck::Deck& deck, const Discretization& discretization)
                   &m_derivative, &m_shear, &m_bulk, &m_temperature, &m_transported, &m_drag_at,
                   &m_unused[0], &m_unused[1], &m_unused[2]})
     v->resize(local);
+  if (m_newton)
+    for (auto* v : {&m_probe_rate, &m_probe_divergence, &m_probe_shear}) v->resize(local);
 }
 
 void Closures::evaluate(const Discretization& discretization, run::FlowState& state,
@@ -100,7 +106,7 @@ void Closures::evaluate_solids_stress(const Discretization& discretization, run:
   if (!m_stress) return;
 
   compute_strain_rate(discretization, state.solids_velocity, fields.strain_rate,
-                      fields.divergence[solids], m_wall_shear_cells);
+                      fields.divergence[solids], m_wall_shear_cells, m_newton ? &m_tensor : nullptr);
   const double weight = m_relaxation_time > 0.0 ? dt / m_relaxation_time : 0.0;
   const bool transported = m_stress->granular_energy() != nullptr;
   m_cells.clear();
@@ -151,6 +157,42 @@ void Closures::evaluate_solids_stress(const Discretization& discretization, run:
   }
   for (const auto& [outflow, fluid] : m_outflow_copies)
     state.solids_pressure[static_cast<std::size_t>(outflow)] = state.solids_pressure[static_cast<std::size_t>(fluid)];
+  if (m_newton) evaluate_tangent_factors(n, in, fields);
+}
+
+void Closures::evaluate_tangent_factors(std::size_t n, const models::SolidsState& in,
+                                        ClosureFields& fields) {
+  // μ_s at the same state with D scaled by 1 + h: n − 1 = dln μ_s/dln γ̇ by a forward difference
+  // (the closures have kinks, a cap among them; n is then that of the side the iterate is on).
+  constexpr double h = 1e-4;
+  auto part = [n](std::vector<double>& v) { return std::span<double>(v.data(), n); };
+  for (std::size_t k = 0; k < n; ++k) {
+    m_probe_rate[k] = (1.0 + h) * m_rate[k];
+    m_probe_divergence[k] = (1.0 + h) * m_divergence[k];
+  }
+  models::SolidsState probe = in;
+  probe.strain_rate = std::span<const double>(m_probe_rate.data(), n);
+  probe.divergence = std::span<const double>(m_probe_divergence.data(), n);
+  // Only μ_s is read from this evaluation; the other outputs land in scratch already copied out.
+  models::SolidsStress out{part(m_unused[0]), part(m_unused[1]), part(m_probe_shear),
+                           part(m_unused[2]), part(m_temperature)};
+  m_stress->evaluate(m_material, probe, out);
+  const std::size_t local = fields.strain_rate.size();
+  for (auto& factor : fields.tangent_factor) factor.assign(local, 1.0);
+  const double log_step = std::log1p(h);
+  for (std::size_t k = 0; k < n; ++k) {
+    const auto i = static_cast<std::size_t>(m_cells[k]);
+    const double mu = m_shear[k], mu_probe = m_probe_shear[k], rate = fields.strain_rate[i];
+    if (!(mu > 0.0 && mu_probe > 0.0 && rate > 0.0)) continue;
+    // n ≥ 0: a stress that falls with the rate would make the implicit viscosity negative.
+    const double index = std::max(1.0 + std::log(mu_probe / mu) / log_step, 0.0);
+    for (int a = 0; a < 3; ++a)
+      for (int b = a; b < 3; ++b) {
+        const auto c = static_cast<std::size_t>(symmetric_component(a, b));
+        const double direction = std::sqrt(2.0) * m_tensor[c][i] / rate;
+        fields.tangent_factor[c][i] = 1.0 + (a == b ? 1.0 : 2.0) * (index - 1.0) * direction * direction;
+      }
+  }
 }
 
 }  // namespace bagnold::solver

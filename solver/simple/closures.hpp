@@ -16,6 +16,10 @@
 // outflow cells of a pressure_outflow region with solids_pressure = "zero-gradient" take the P_s
 // of their fluid neighbour (MFIX's set_outflow), so the solids leave without a P_s drop across
 // the outlet face; with "zero" (the default) their P_s stays 0.
+// With numerics.viscosity_linearization = "newton" the closure is evaluated a second time at
+// the strain-rate tensor scaled by 1 + h (h = 10⁻⁴), which gives the flow index
+// n = 1 + dln μ_s/dln γ̇ per cell, and with the strain direction N = √2 D/γ̇ the tangent factors
+// of ClosureFields (the Newton linearization of τ = 2 μ_s(γ̇) D: δτ = 2 μ_s (δD + (n − 1) N (N:δD))).
 // Where the closure transports Θ (models::SolidsStressModel::granular_energy()), it takes the
 // iterate's Θ (the granular energy equation's, granular_energy_equation.hpp) and β instead of
 // its algebraic balance, and hands Θ back unchanged (0 where the theory holds it there).
@@ -29,6 +33,7 @@
 #include "models/stress/solids_stress.hpp"
 #include "solver/discretization.hpp"
 #include "solver/simple/iteration_fields.hpp"
+#include "solver/strain_rate.hpp"
 #include "src/deck/deck.hpp"
 #include "src/run/flow_state.hpp"
 
@@ -74,6 +79,12 @@ class Closures {
   std::vector<double> m_pressure, m_derivative, m_shear, m_bulk, m_temperature;
   std::vector<double> m_transported, m_drag_at;  // Θ and β in, where Θ is transported
   std::array<std::vector<double>, 3> m_unused;  // outputs of the second evaluation at γ̇_P
+  bool m_newton = false;  // numerics.viscosity_linearization = "newton"
+  StrainTensor m_tensor;  // D per local cell (Newton only)
+  std::vector<double> m_probe_rate, m_probe_divergence, m_probe_shear;  // the evaluation at (1 + h) D
+
+  void evaluate_tangent_factors(std::size_t n, const models::SolidsState& in,
+                                ClosureFields& fields);
 };
 
 }  // namespace bagnold::solver

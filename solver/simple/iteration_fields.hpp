@@ -17,6 +17,11 @@ struct ClosureFields {
   std::vector<double> pressure_derivative;       // dP_s/dε_s [Pa] at fixed strain rate
   std::vector<double> strain_rate;               // γ̇ = sqrt(2 D:D) of the solids [1/s]
   std::array<std::vector<double>, 2> divergence;  // ∇·u_g, ∇·u_s [1/s] (0 beyond fluid cells)
+  // numerics.viscosity_linearization = "newton": per symmetric component (a, b) of D
+  // (symmetric_component in strain_rate.hpp), the solids' tangent viscosity on the faces that
+  // carry ∂_b u_a over μ_s: 1 + (n − 1) N_ab² (a = b) or 1 + 2 (n − 1) N_ab² (a ≠ b), with
+  // n = dln τ/dln γ̇ and N = √2 D/γ̇ (closures.cpp). Empty under Picard.
+  std::array<std::vector<double>, 6> tangent_factor;
 };
 
 // The fraction of each phase carried through each face (per phase, direction d, owning cell):

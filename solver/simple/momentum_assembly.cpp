@@ -47,6 +47,7 @@
 
 #include "solver/simple/face_fractions.hpp"
 #include "solver/simple/momentum_rows.hpp"
+#include "solver/strain_rate.hpp"
 
 namespace bagnold::solver {
 
@@ -62,7 +63,7 @@ double mean_viscosity(deck::ViscosityAverage average, double a, double b) {
 void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d,
                             const run::FlowState& state, SolidsWallCoefficients* walls,
                             bool refresh_wall_coefficients, std::vector<MomentumRow>& rows,
-                            std::vector<double>& pair_viscosity) {
+                            PairViscosities& pairs) {
   const Discretization& disc = in.discretization;
   const auto& layout = disc.layout();
   const auto ud = static_cast<std::size_t>(d);
@@ -83,11 +84,32 @@ void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d
   // The mean viscosity of each local cell and its + neighbour along d (the cell's own without
   // one), once per cell: a wall face takes its row's, an edge the mean of two rows' (each row
   // shares its cells' pair with the rows beside it).
+  auto& pair_viscosity = pairs.secant;
   pair_viscosity.resize(static_cast<std::size_t>(layout.local_count()));
   for (int l = 0; l < layout.local_count(); ++l) {
     const int n = layout.neighbour(l, 2 * d + 1);
     pair_viscosity[static_cast<std::size_t>(l)] = n >= 0 ? mean(viscosity(l), viscosity(n)) : viscosity(l);
   }
+  // Newton: the implicit part of each face's viscous coefficient is the tangent's, μ_s f_de
+  // (ClosureFields::tangent_factor); the rest, (D − D_t)(u_nb − u_P), acts on the iterate.
+  const auto& factors = in.closures.tangent_factor;
+  const bool newton = phase == solids && !factors[0].empty();
+  auto tangent_viscosity = [&](int local, int e) {
+    if (local < 0) return 0.0;
+    const auto i = static_cast<std::size_t>(local);
+    return mu[i] * factors[static_cast<std::size_t>(symmetric_component(d, e))][i];
+  };
+  if (newton)
+    for (int e = 0; e < 3; ++e) {
+      if (e == d) continue;
+      auto& pair = pairs.tangent[static_cast<std::size_t>(e)];
+      pair.resize(static_cast<std::size_t>(layout.local_count()));
+      for (int l = 0; l < layout.local_count(); ++l) {
+        const int n = layout.neighbour(l, 2 * d + 1);
+        pair[static_cast<std::size_t>(l)] = n >= 0 ? mean(tangent_viscosity(l, e), tangent_viscosity(n, e))
+                                                   : tangent_viscosity(l, e);
+      }
+    }
 
   rows.resize(numbering.owned_locals.size());
   for (std::size_t r = 0; r < numbering.owned_locals.size(); ++r) {
@@ -116,7 +138,7 @@ void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d
       const Link& link = links[6 * static_cast<std::size_t>(l) + static_cast<std::size_t>(face)];
       const int e = parallel::face_direction(face);
       const int s = parallel::face_sign(face);
-      double flux_out = 0.0, diffusion = 0.0;
+      double flux_out = 0.0, diffusion = 0.0, tangent = 0.0;
       if (e == d) {
         // The control-volume face at the centre of n (s > 0) or of c (s < 0).
         // Its mass flux is the mean of the continuity fluxes through the two cell faces it lies
@@ -128,6 +150,7 @@ void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d
         const double far = has_far ? at(link.local) * carried_d[static_cast<std::size_t>(link.local)] : own;
         flux_out = s * rho * row.area * 0.5 * (own + far);
         diffusion = has_far ? 2.0 * viscosity(centre) * row.area / disc.width(centre, d) : 0.0;
+        if (newton && has_far) tangent = 2.0 * tangent_viscosity(centre, d) * row.area / disc.width(centre, d);
       } else {
         // The face between the owning cells' faces along e: half of c's and half of n's.
         const int t = 3 - d - e;
@@ -147,15 +170,22 @@ void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d
           if (phase == solids && walls && walls->partial(link)) {
             diffusion = walls->coefficient(disc, state, in.closures, link, l, d, face,
                                            refresh_wall_coefficients) * area;
+            tangent = diffusion;
           } else {
             const double wall_distance = 0.5 * disc.width(l, e);
             diffusion = pair_viscosity[static_cast<std::size_t>(l)] * area / wall_distance;
+            if (newton) tangent = pairs.tangent[static_cast<std::size_t>(e)][static_cast<std::size_t>(l)] * area / wall_distance;
           }
         } else if (link.kind != LinkKind::zero_gradient) {
           // The edge between c, n and their neighbours m, m' across the face.
           const int m = link.local;
           const double edge_mu = mean(pair_viscosity[static_cast<std::size_t>(l)], pair_viscosity[static_cast<std::size_t>(m)]);
           diffusion = edge_mu * area / (0.5 * (disc.width(l, e) + disc.width(m, e)));
+          if (newton) {
+            const auto& pair = pairs.tangent[static_cast<std::size_t>(e)];
+            tangent = mean(pair[static_cast<std::size_t>(l)], pair[static_cast<std::size_t>(m)]) * area /
+                      (0.5 * (disc.width(l, e) + disc.width(m, e)));
+          }
           // The transpose's cross part μ ∂_d u_e on this face: ∂_d u_e from uc_e and un_e,
           // δ_d = half_c + half_n apart (so A/δ_d = width along t).
           row.b += s * edge_mu * (un_e - uc_e) * disc.width(l, t);
@@ -163,7 +193,8 @@ void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d
       }
       switch (link.kind) {
         case LinkKind::unknown: {
-          const double a_nb = diffusion + std::max(-flux_out, 0.0);
+          const double a_nb = (newton ? tangent : diffusion) + std::max(-flux_out, 0.0);
+          if (newton) row.b += (diffusion - tangent) * (at(link.local) - at(l));
           row.a += a_nb;
           row.columns[row.count] = numbering.global[static_cast<std::size_t>(link.local)];
           row.values[row.count++] = -a_nb;
@@ -192,8 +223,14 @@ void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d
         case LinkKind::wall: {
           const double value = link.kind == LinkKind::fixed ? at(link.local) : link.value;
           const double a_nb = diffusion + std::max(-flux_out, 0.0);
-          row.a += a_nb;
-          row.b += a_nb * value;
+          if (newton) {
+            const double implicit = tangent + std::max(-flux_out, 0.0);
+            row.a += implicit;
+            row.b += implicit * value + (diffusion - tangent) * (value - at(l));
+          } else {
+            row.a += a_nb;
+            row.b += a_nb * value;
+          }
           row.force += a_nb * std::abs(value - at(l));
           break;
         }

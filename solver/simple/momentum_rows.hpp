@@ -51,13 +51,20 @@ struct MomentumAssemblyInputs {
   const std::array<std::vector<double>, 3>& gas_source;
 };
 
+// Scratch of the assembly (sized there): per local cell, the mean viscosity of the cell and its
+// + neighbour along d; under numerics.viscosity_linearization = "newton" (solids), the same of
+// the tangent viscosities μ_s f_de that the faces normal to each direction e take.
+struct PairViscosities {
+  std::vector<double> secant;
+  std::array<std::vector<double>, 3> tangent;
+};
+
 // Fills `rows` (one per owned unknown face along d, in row order) for `phase` from the iterate
 // `state`. Partial-slip solids walls take c_w from `walls`, re-evaluated when
-// refresh_wall_coefficients (the step's first outer iteration), else as held. pair_viscosity is
-// scratch (sized here).
+// refresh_wall_coefficients (the step's first outer iteration), else as held.
 void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d,
                             const run::FlowState& state, SolidsWallCoefficients* walls,
                             bool refresh_wall_coefficients, std::vector<MomentumRow>& rows,
-                            std::vector<double>& pair_viscosity);
+                            PairViscosities& pair_viscosity);
 
 }  // namespace bagnold::solver

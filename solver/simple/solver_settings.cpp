@@ -25,6 +25,9 @@ SolverSettings::SolverSettings(const deck::Deck& deck, const parallel::Domain& d
       bulk_viscosity_ratio(deck.numerics.solids_bulk_viscosity_ratio),
       viscosity_average(deck::choice_value(deck::viscosity_average_choices,
                                            deck.numerics.viscosity_average, "viscosity average")),
+      viscosity_linearization(deck::choice_value(deck::viscosity_linearization_choices,
+                                                 deck.numerics.viscosity_linearization,
+                                                 "viscosity linearization")),
       vacant_fraction(deck.numerics.vacant_fraction) {
   double extent = 0.0, g2 = 0.0;
   for (int d = 0; d < 3; ++d) {

@@ -58,6 +58,12 @@ enum class ViscosityAverage { arithmetic, harmonic };
 inline constexpr std::array<Choice<ViscosityAverage>, 2> viscosity_average_choices{
     {{"arithmetic", ViscosityAverage::arithmetic}, {"harmonic", ViscosityAverage::harmonic}}};
 
+// numerics.viscosity_linearization: how the solids momentum rows take μ_s(γ̇)
+// (solver/simple/momentum_assembly.cpp).
+enum class ViscosityLinearization { picard, newton };
+inline constexpr std::array<Choice<ViscosityLinearization>, 2> viscosity_linearization_choices{
+    {{"picard", ViscosityLinearization::picard}, {"newton", ViscosityLinearization::newton}}};
+
 // numerics.algorithm: the pressure-velocity coupling (solver/simple/momentum_predictor.cpp).
 enum class Coupling { simplec, simple };
 inline constexpr std::array<Choice<Coupling>, 2> coupling_choices{

@@ -366,6 +366,17 @@ const Section<Numerics>& numerics_section() {
                "free surface) or harmonic (2ab/(a + b), nested as MFIX's AVG_H; exact for "
                "piecewise-constant layers). docs/solver.md gives the measurements behind the "
                "default."),
+      key(&Numerics::viscosity_linearization, "viscosity_linearization").init()
+          .one_of(choice_names(viscosity_linearization_choices))
+          .doc("How the solids momentum rows of an outer iteration take the closure's μ_s(γ̇). "
+               "picard: the viscous terms implicit with μ_s of the current iterate (the secant "
+               "viscosity); where the stress barely depends on the rate (a jammed, frictional "
+               "bed) or grows as its square (Bagnold scaling), the outer iteration then contracts "
+               "by about |n − 1| per pass, n = dln τ/dln γ̇. newton: the implicit viscosity is "
+               "the tangent's part along the current strain direction, μ_s (1 + (n − 1) N_de²) "
+               "per face (N = √2 D/γ̇), and the rest of μ_s acts on the current iterate, so the "
+               "converged step is the same; n comes from a second closure evaluation at 1.0001 γ̇. "
+               "Does not change the model, only how the iteration reaches it (docs/solver.md)."),
       key(&Numerics::solids_bulk_viscosity_ratio, "solids_bulk_viscosity_ratio").unit("-").init()
           .within(0.0, 100.0)
           .doc("r: a bulk viscosity r μ_s added to the closure's own λ_s (σ = −P_s I + 2 μ_s D + "

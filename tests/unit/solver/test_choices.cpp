@@ -33,6 +33,13 @@ TEST(Choices, CouplingsAreExactlyTheShippedOnes) {
   EXPECT_EQ(deck::choice_value(deck::coupling_choices, "simple", "algorithm"), deck::Coupling::simple);
 }
 
+TEST(Choices, ViscosityLinearizationsAreExactlyTheShippedOnes) {
+  const std::vector<std::string> shipped = {"picard", "newton"};
+  EXPECT_EQ(deck::choice_names(deck::viscosity_linearization_choices), shipped);
+  EXPECT_EQ(deck::choice_value(deck::viscosity_linearization_choices, "newton", "viscosity linearization"),
+            deck::ViscosityLinearization::newton);
+}
+
 // Each limiter ψ(r) is TVD (0 ≤ ψ ≤ min(2r, 2)) and second order (ψ(1) = 1), except upwind.
 TEST(Choices, EveryShippedLimiterIsTvdAndSecondOrder) {
   for (const auto& c : deck::limiter_choices) {

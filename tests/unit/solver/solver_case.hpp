@@ -101,4 +101,20 @@ inline double wiggle(const std::array<double, 3>& x, double phase = 0.0) {
   return std::sin(173.0 * x[0] + 311.0 * x[1] + 97.0 * x[2] + phase);
 }
 
+// Solids (no gas) at ε_s everywhere, velocity u_i = G_ij x_j at every face; old = state.
+inline void set_linear_solids(Case& c, double eps_s, const double G[3][3]) {
+  for (int l = 0; l < c.local_count(); ++l) {
+    const auto i = static_cast<std::size_t>(l);
+    c.state.solids_fraction[i] = eps_s;
+    c.state.gas_fraction[i] = 1.0 - eps_s;
+    for (int a = 0; a < 3; ++a) {
+      const auto x = c.face_position(l, a);
+      double u = 0.0;
+      for (int b = 0; b < 3; ++b) u += G[a][b] * x[static_cast<std::size_t>(b)];
+      c.state.solids_velocity[static_cast<std::size_t>(a)][i] = u;
+    }
+  }
+  c.old = c.state;
+}
+
 }  // namespace bagnold::tests

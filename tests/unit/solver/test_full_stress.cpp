@@ -70,22 +70,6 @@ struct StressRows {
   solver::CarriedFractions carried;
 };
 
-// Solids (no gas) at ε_s everywhere, velocity u_i = G_ij x_j at every face.
-void set_linear_solids(Case& c, double eps_s, const double G[3][3]) {
-  for (int l = 0; l < c.local_count(); ++l) {
-    const auto i = static_cast<std::size_t>(l);
-    c.state.solids_fraction[i] = eps_s;
-    c.state.gas_fraction[i] = 1.0 - eps_s;
-    for (int a = 0; a < 3; ++a) {
-      const auto x = c.face_position(l, a);
-      double u = 0.0;
-      for (int b = 0; b < 3; ++b) u += G[a][b] * x[static_cast<std::size_t>(b)];
-      c.state.solids_velocity[static_cast<std::size_t>(a)][i] = u;
-    }
-  }
-  c.old = c.state;
-}
-
 // A closed 8 × 8 × 8 box of 1 cm cells, solids only, with the closure `stress`. Harmonic edge
 // viscosities: an edge that touches a stress-free cell (μ = 0) then carries no shear, so the
 // stress force on a row beside a stress-free region is the normal traction alone.

@@ -30,22 +30,6 @@ std::string newton_box() {
                    two_fluid("mkt", false) + "[numerics]\nviscosity_linearization = \"newton\"\n");
 }
 
-// Solids only at ε_s, velocity u_i = G_ij x_j on every face.
-void set_linear_solids(Case& c, double eps_s, const double G[3][3]) {
-  for (int l = 0; l < c.local_count(); ++l) {
-    const auto i = static_cast<std::size_t>(l);
-    c.state.solids_fraction[i] = eps_s;
-    c.state.gas_fraction[i] = 1.0 - eps_s;
-    for (int a = 0; a < 3; ++a) {
-      const auto x = c.face_position(l, a);
-      double u = 0.0;
-      for (int b = 0; b < 3; ++b) u += G[a][b] * x[static_cast<std::size_t>(b)];
-      c.state.solids_velocity[static_cast<std::size_t>(a)][i] = u;
-    }
-  }
-  c.old = c.state;
-}
-
 // The tangent factors of the box's central cell under simple shear u_x = rate · z at ε_s.
 std::array<double, 6> simple_shear_factors(double eps_s, double rate) {
   Case c(newton_box());

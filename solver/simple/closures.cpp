@@ -189,8 +189,8 @@ void Closures::evaluate_tangent_factors(std::size_t n, const models::SolidsState
     for (int a = 0; a < 3; ++a)
       for (int b = a; b < 3; ++b) {
         const auto c = static_cast<std::size_t>(symmetric_component(a, b));
-        const double direction = std::sqrt(2.0) * m_tensor[c][i] / rate;
-        fields.tangent_factor[c][i] = 1.0 + (a == b ? 1.0 : 2.0) * (index - 1.0) * direction * direction;
+        const double component = m_tensor[c][i] / rate;  // N_ab² = 2 D_ab²/γ̇²
+        fields.tangent_factor[c][i] = 1.0 + (a == b ? 2.0 : 4.0) * (index - 1.0) * component * component;
       }
   }
 }

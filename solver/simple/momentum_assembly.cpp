@@ -94,11 +94,10 @@ void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d
   // (ClosureFields::tangent_factor); the rest, (D − D_t)(u_nb − u_P), acts on the iterate.
   const auto& factors = in.closures.tangent_factor;
   const bool newton = phase == solids && !factors[0].empty();
-  auto tangent_viscosity = [&](int local, int e) {
-    if (local < 0) return 0.0;
-    const auto i = static_cast<std::size_t>(local);
-    return mu[i] * factors[static_cast<std::size_t>(symmetric_component(d, e))][i];
+  auto tangent_factor = [&](int local, int e) {
+    return factors[static_cast<std::size_t>(symmetric_component(d, e))][static_cast<std::size_t>(local)];
   };
+  auto tangent_viscosity = [&](int local, int e) { return local >= 0 ? viscosity(local) * tangent_factor(local, e) : 0.0; };
   if (newton)
     for (int e = 0; e < 3; ++e) {
       if (e == d) continue;
@@ -150,7 +149,7 @@ void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d
         const double far = has_far ? at(link.local) * carried_d[static_cast<std::size_t>(link.local)] : own;
         flux_out = s * rho * row.area * 0.5 * (own + far);
         diffusion = has_far ? 2.0 * viscosity(centre) * row.area / disc.width(centre, d) : 0.0;
-        if (newton && has_far) tangent = 2.0 * tangent_viscosity(centre, d) * row.area / disc.width(centre, d);
+        if (newton && has_far) tangent = diffusion * tangent_factor(centre, d);
       } else {
         // The face between the owning cells' faces along e: half of c's and half of n's.
         const int t = 3 - d - e;
@@ -191,9 +190,11 @@ void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d
           row.b += s * edge_mu * (un_e - uc_e) * disc.width(l, t);
         }
       }
+      // What the row holds implicitly; under Newton the rest, (D − D_t), acts on the iterate.
+      const double implicit = newton ? tangent : diffusion;
       switch (link.kind) {
         case LinkKind::unknown: {
-          const double a_nb = (newton ? tangent : diffusion) + std::max(-flux_out, 0.0);
+          const double a_nb = implicit + std::max(-flux_out, 0.0);
           if (newton) row.b += (diffusion - tangent) * (at(link.local) - at(l));
           row.a += a_nb;
           row.columns[row.count] = numbering.global[static_cast<std::size_t>(link.local)];
@@ -222,16 +223,12 @@ void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d
         case LinkKind::fixed:
         case LinkKind::wall: {
           const double value = link.kind == LinkKind::fixed ? at(link.local) : link.value;
-          const double a_nb = diffusion + std::max(-flux_out, 0.0);
-          if (newton) {
-            const double implicit = tangent + std::max(-flux_out, 0.0);
-            row.a += implicit;
-            row.b += implicit * value + (diffusion - tangent) * (value - at(l));
-          } else {
-            row.a += a_nb;
-            row.b += a_nb * value;
-          }
-          row.force += a_nb * std::abs(value - at(l));
+          const double convective = std::max(-flux_out, 0.0);
+          const double a_nb = implicit + convective;
+          row.a += a_nb;
+          row.b += a_nb * value;
+          if (newton) row.b += (diffusion - tangent) * (value - at(l));
+          row.force += (diffusion + convective) * std::abs(value - at(l));  // the whole wall stress
           break;
         }
         case LinkKind::zero_gradient:

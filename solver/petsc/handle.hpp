@@ -52,6 +52,7 @@ class PetscHandle {
 using PetscVec = PetscHandle<Vec, VecDestroy>;
 using PetscMat = PetscHandle<Mat, MatDestroy>;
 using PetscKsp = PetscHandle<KSP, KSPDestroy>;
+using PetscIs = PetscHandle<IS, ISDestroy>;
 using PetscNullSpace = PetscHandle<MatNullSpace, MatNullSpaceDestroy>;
 
 // PetscInitialize / PetscFinalize for the lifetime of a program (after MPI is initialized).

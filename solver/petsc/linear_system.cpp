@@ -126,14 +126,28 @@ SolveReport LinearSystem::solve(std::vector<double>& x) {
     if (null_space) petsc_check(MatNullSpaceRemove(null_space, m_rhs.get()), "MatNullSpaceRemove");
   }
   m_assembled_once = true;
-  petsc_check(KSPSetOperators(m_ksp.get(), m_matrix.get(), m_matrix.get()), "KSPSetOperators");
+  if (m_settings.solve_decoupled_rows_directly) return solve_coupled_rows(x);
   PetscScalar* values = nullptr;
   petsc_check(VecGetArray(m_solution.get(), &values), "VecGetArray");
   std::copy(x.begin(), x.begin() + m_rows, values);
   petsc_check(VecRestoreArray(m_solution.get(), &values), "VecRestoreArray");
+  const SolveReport report = run_ksp(m_matrix.get(), m_rhs.get(), m_solution.get());
+  const PetscScalar* solved = nullptr;
+  petsc_check(VecGetArrayRead(m_solution.get(), &solved), "VecGetArrayRead");
+  std::copy(solved, solved + m_rows, x.begin());
+  petsc_check(VecRestoreArrayRead(m_solution.get(), &solved), "VecRestoreArrayRead");
+  return report;
+}
+
+std::int64_t LinearSystem::krylov_rows() const {
+  return m_settings.solve_decoupled_rows_directly ? static_cast<std::int64_t>(m_coupled.size()) : m_rows;
+}
+
+SolveReport LinearSystem::run_ksp(Mat matrix, Vec rhs, Vec solution) {
+  petsc_check(KSPSetOperators(m_ksp.get(), matrix, matrix), "KSPSetOperators");
   {
     const ScopedWorkClock clock(ScopedWorkClock::solve);
-    petsc_check(KSPSolve(m_ksp.get(), m_rhs.get(), m_solution.get()), "KSPSolve");
+    petsc_check(KSPSolve(m_ksp.get(), rhs, solution), "KSPSolve");
   }
   SolveReport report;
   PetscInt iterations = 0;
@@ -144,15 +158,107 @@ SolveReport LinearSystem::solve(std::vector<double>& x) {
   report.iterations = static_cast<int>(iterations);
   report.converged = reason > 0;
   report.reason = KSPConvergedReasons[reason];
-  const PetscScalar* solved = nullptr;
-  petsc_check(VecGetArrayRead(m_solution.get(), &solved), "VecGetArrayRead");
-  std::copy(solved, solved + m_rows, x.begin());
-  petsc_check(VecRestoreArrayRead(m_solution.get(), &solved), "VecRestoreArrayRead");
   // A matrix with Inf or NaN (a diverging outer iteration) can leave the preconditioner failed
   // for every later solve, even of a healthy matrix: start the next solve from a fresh KSP.
-  int finite = std::all_of(x.begin(), x.begin() + m_rows, [](double v) { return std::isfinite(v); });
+  PetscInt size = 0;
+  petsc_check(VecGetLocalSize(solution, &size), "VecGetLocalSize");
+  const PetscScalar* solved = nullptr;
+  petsc_check(VecGetArrayRead(solution, &solved), "VecGetArrayRead");
+  int finite = std::all_of(solved, solved + size, [](double v) { return std::isfinite(v); });
+  petsc_check(VecRestoreArrayRead(solution, &solved), "VecRestoreArrayRead");
   MPI_Allreduce(MPI_IN_PLACE, &finite, 1, MPI_INT, MPI_MIN, m_comm);
   if (reason == KSP_DIVERGED_NANORINF || reason == KSP_DIVERGED_PC_FAILED || !finite) create_ksp();
+  return report;
+}
+
+bool LinearSystem::split_decoupled_rows(std::vector<double>& x) {
+  m_next_coupled.clear();
+  bool known_nonzero = false;
+  for (std::int64_t r = 0; r < m_rows; ++r) {
+    const auto ur = static_cast<std::size_t>(r);
+    const std::int64_t row = m_first_row + r;
+    double diagonal = 0.0;
+    bool coupled = false;
+    for (auto k = m_pattern.offsets[ur]; k < m_pattern.offsets[ur + 1]; ++k) {
+      const auto uk = static_cast<std::size_t>(k);
+      if (m_pattern.columns[uk] == row) diagonal += m_values[uk];
+      else if (m_values[uk] != 0.0) coupled = true;
+    }
+    // A zero diagonal on a decoupled row is a singular system: its Inf/NaN fails the solve.
+    if (coupled) m_next_coupled.push_back(static_cast<PetscInt>(row));
+    else x[ur] = m_rhs_values[ur] / diagonal, known_nonzero = known_nonzero || x[ur] != 0.0;
+  }
+  return known_nonzero;
+}
+
+SolveReport LinearSystem::solve_coupled_rows(std::vector<double>& x) {
+  const bool known_nonzero = split_decoupled_rows(x);
+  const bool finite = std::all_of(x.begin(), x.begin() + m_rows, [](double v) { return std::isfinite(v); });
+  // One reduction: did any rank's coupled rows change, is any known value nonzero or not
+  // finite, how many coupled rows are there.
+  long long counts[4] = {m_coupled_built && m_next_coupled == m_coupled ? 0 : 1, known_nonzero ? 1 : 0,
+                         finite ? 0 : 1, static_cast<long long>(m_next_coupled.size())};
+  MPI_Allreduce(MPI_IN_PLACE, counts, 4, MPI_LONG_LONG, MPI_SUM, m_comm);
+  const bool changed = counts[0] > 0, any_known = counts[1] > 0, any_coupled = counts[3] > 0;
+  if (changed) {
+    m_coupled.swap(m_next_coupled);
+    m_coupled_built = true;
+    m_coupled_matrix.reset();
+    m_coupled_rows.reset();
+    if (any_coupled) {
+      const auto n = static_cast<PetscInt>(m_coupled.size());
+      petsc_check(ISCreateGeneral(m_comm, n, m_coupled.data(), PETSC_COPY_VALUES, m_coupled_rows.out()),
+                  "ISCreateGeneral");
+      petsc_check(MatCreateSubMatrix(m_matrix.get(), m_coupled_rows.get(), m_coupled_rows.get(),
+                                     MAT_INITIAL_MATRIX, m_coupled_matrix.out()),
+                  "MatCreateSubMatrix");
+      petsc_check(MatCreateVecs(m_coupled_matrix.get(), m_coupled_solution.out(), m_coupled_rhs.out()),
+                  "MatCreateVecs");
+      create_ksp();  // a KSP keeps the sizes of the operators it was first set up with
+    }
+  } else if (any_coupled) {
+    Mat reused = m_coupled_matrix.get();
+    petsc_check(MatCreateSubMatrix(m_matrix.get(), m_coupled_rows.get(), m_coupled_rows.get(),
+                                   MAT_REUSE_MATRIX, &reused),
+                "MatCreateSubMatrix");
+  }
+  SolveReport report;
+  report.converged = counts[2] == 0;
+  report.reason = report.converged ? "no coupled rows" : "a decoupled row with a zero diagonal";
+  if (!any_coupled || !report.converged) return report;
+
+  // The coupled rows' right-hand side b − A x_known, with x_known zero on the coupled rows.
+  const PetscScalar* known_product = nullptr;
+  if (any_known) {
+    if (!m_known.get())
+      petsc_check(MatCreateVecs(m_matrix.get(), m_known.out(), m_known_product.out()), "MatCreateVecs");
+    PetscScalar* known = nullptr;
+    petsc_check(VecGetArray(m_known.get(), &known), "VecGetArray");
+    std::copy(x.begin(), x.begin() + m_rows, known);
+    for (const PetscInt row : m_coupled) known[row - m_first_row] = 0.0;
+    petsc_check(VecRestoreArray(m_known.get(), &known), "VecRestoreArray");
+    petsc_check(MatMult(m_matrix.get(), m_known.get(), m_known_product.get()), "MatMult");
+    petsc_check(VecGetArrayRead(m_known_product.get(), &known_product), "VecGetArrayRead");
+  }
+  PetscScalar *rhs = nullptr, *guess = nullptr;
+  petsc_check(VecGetArray(m_coupled_rhs.get(), &rhs), "VecGetArray");
+  petsc_check(VecGetArray(m_coupled_solution.get(), &guess), "VecGetArray");
+  for (std::size_t i = 0; i < m_coupled.size(); ++i) {
+    const auto r = static_cast<std::size_t>(m_coupled[i] - m_first_row);
+    rhs[i] = m_rhs_values[r] - (known_product ? known_product[r] : 0.0);
+    guess[i] = x[r];
+  }
+  petsc_check(VecRestoreArray(m_coupled_solution.get(), &guess), "VecRestoreArray");
+  petsc_check(VecRestoreArray(m_coupled_rhs.get(), &rhs), "VecRestoreArray");
+  if (known_product)
+    petsc_check(VecRestoreArrayRead(m_known_product.get(), &known_product), "VecRestoreArrayRead");
+
+  report = run_ksp(m_coupled_matrix.get(), m_coupled_rhs.get(), m_coupled_solution.get());
+  const PetscScalar* solved = nullptr;
+  petsc_check(VecGetArrayRead(m_coupled_solution.get(), &solved), "VecGetArrayRead");
+  for (std::size_t i = 0; i < m_coupled.size(); ++i)
+    x[static_cast<std::size_t>(m_coupled[i] - m_first_row)] = solved[i];
+  petsc_check(VecRestoreArrayRead(m_coupled_solution.get(), &solved), "VecRestoreArrayRead");
   return report;
 }
 

@@ -23,6 +23,11 @@ struct KrylovSettings {
   double absolute_tolerance = 1e-12;
   int max_iterations = 500;
   bool constant_null_space = false;  // pure Neumann pressure problem
+  // Rows whose off-diagonal values are all zero (a solids row where there are no solids) are
+  // solved directly, x_i = b_i / a_ii, and left out of the Krylov solve, which sees their
+  // values as known (moved to the other rows' right-hand sides). Only the coupled rows cost
+  // Krylov work; the answer is the same system's.
+  bool solve_decoupled_rows_directly = false;
 };
 
 struct SolveReport {
@@ -48,9 +53,19 @@ class LinearSystem {
   void reuse_preconditioner(bool reuse);
   // Solves with `x` (owned entries, in row order) as the initial guess; x is overwritten.
   SolveReport solve(std::vector<double>& x);
+  // Rows in the last solve's Krylov system on this rank (all owned rows unless
+  // solve_decoupled_rows_directly).
+  std::int64_t krylov_rows() const;
 
  private:
   void create_ksp();  // (re)creates the KSP with the settings and the command-line options
+  // KSPSolve of matrix · solution = rhs with m_ksp; a solution with Inf or NaN recreates the KSP.
+  SolveReport run_ksp(Mat matrix, Vec rhs, Vec solution);
+  // solve() under solve_decoupled_rows_directly, after the matrix and right-hand side are set.
+  SolveReport solve_coupled_rows(std::vector<double>& x);
+  // Fills m_next_coupled with this rank's coupled rows (global) and x at the others; returns
+  // whether any directly solved value is nonzero.
+  bool split_decoupled_rows(std::vector<double>& x);
 
   MPI_Comm m_comm;
   std::int64_t m_rows;
@@ -64,6 +79,14 @@ class LinearSystem {
   PetscVec m_rhs, m_solution;
   PetscKsp m_ksp;
   bool m_assembled_once = false;
+
+  // The coupled rows' system (solve_decoupled_rows_directly): its rows, this rank's in global
+  // numbering, and the submatrix, vectors and index set over them, rebuilt when the rows change.
+  std::vector<PetscInt> m_coupled, m_next_coupled;
+  bool m_coupled_built = false;
+  PetscIs m_coupled_rows;
+  PetscMat m_coupled_matrix;
+  PetscVec m_coupled_rhs, m_coupled_solution, m_known, m_known_product;
 };
 
 }  // namespace bagnold::solver

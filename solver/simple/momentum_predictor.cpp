@@ -45,10 +45,13 @@ MomentumPredictor::MomentumPredictor(const deck::Deck& deck, const Discretizatio
   for (int d = 0; d < 3; ++d) {
     const auto& n = discretization.velocity_numbering(d);
     const SparsityPattern pattern = discretization.momentum_pattern(d);
-    for (const Phase phase : {gas, solids})
+    for (const Phase phase : {gas, solids}) {
+      // A solids row where there are no solids is an identity row: solved directly.
+      krylov.solve_decoupled_rows_directly = phase == solids;
       if (settings.moves[phase])
         m_systems[phase][static_cast<std::size_t>(d)] = std::make_unique<LinearSystem>(
             comm, pattern, n.first_row, prefixes[phase][d], krylov);
+    }
   }
   if (settings.moves[solids] && closure)
     m_walls = std::make_unique<SolidsWallCoefficients>(deck, discretization, *closure);

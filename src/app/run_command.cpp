@@ -112,19 +112,23 @@ int run_command(const DeckArguments& args) {
     RunSummary result;
     std::string rank_table;    // the ranks' balance at the end, on more than one rank
     std::string directory;     // where the run writes
-    std::vector<int> weights;      // the work weights of a partition by work, else empty
-    std::vector<int> repartition;  // the next segment's weights (numerics.repartition_imbalance)
-    const auto partition_by_work = [&](std::vector<int> by) {
+    // What a partition by the state weighs: the deck's choice, or work when a partition by cells
+    // is redone (numerics.repartition_imbalance).
+    const std::string weighing =
+        deck.numerics.partition_weights == "cells" ? "work" : deck.numerics.partition_weights;
+    parallel::PartitionWeights weights;      // of a partition by the state, else empty
+    parallel::PartitionWeights repartition;  // the next segment's (numerics.repartition_imbalance)
+    const auto partition_by_work = [&](parallel::PartitionWeights by) {
       weights = std::move(by);
       prepared.domain = std::make_unique<parallel::Domain>(deck, comm, weights);
-      say(run::work_partition_text(*prepared.domain, weights));
+      say(run::work_partition_text(weighing, *prepared.domain, weights));
     };
     // One segment per partition: the run's start, then one after each repartition, which
     // continues from the snapshot the last segment ended with.
     for (bool first_segment = true;; first_segment = false) {
-      // The state on the partition by fluid cells; with numerics.partition_weights = "work" on
-      // more than one rank (or after a repartition), the partition weighted by that state's work
-      // (work_weights.hpp), and the state again on it.
+      // The state on the partition by fluid cells; with numerics.partition_weights = "work" or
+      // "phases" on more than one rank (or after a repartition), the partition weighted by that
+      // state (work_weights.hpp), and the state again on it.
       if (!repartition.empty()) partition_by_work(std::exchange(repartition, {}));
       run::FlowState state(0);
       StartPoint start;
@@ -140,8 +144,8 @@ int run_command(const DeckArguments& args) {
             return first_segment ? bad_input : run_failed;
           }
         }
-        if (weighted || deck.numerics.partition_weights != "work" || comm.size() == 1) break;
-        partition_by_work(run::work_weights(*prepared.domain, state, solver::solids_threshold));
+        if (weighted || deck.numerics.partition_weights == "cells" || comm.size() == 1) break;
+        partition_by_work(run::partition_weights(weighing, *prepared.domain, state, solver::solids_threshold));
       }
       const parallel::Domain& domain = *prepared.domain;
       if (first_segment && !snapshot.empty()) {
@@ -203,7 +207,7 @@ int run_command(const DeckArguments& args) {
       // Partition anew by the state's work; the next segment reads the state back from the
       // snapshot just written, each rank its new cells (the flow solver, output writer and
       // monitor of this segment, which hold the old partition, go out of scope first).
-      repartition = run::work_weights(domain, state, solver::solids_threshold);
+      repartition = run::partition_weights(weighing, domain, state, solver::solids_threshold);
       snapshot = segment.repartition_from;
     }
     for (const auto& option : solver::PetscSession::unused_options())

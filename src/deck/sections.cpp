@@ -407,10 +407,12 @@ const Section<Numerics>& numerics_section() {
                "number of ranks, and no factorization per solve) or block Jacobi with ILU(0) on "
                "each rank's block. Either changes how a solve reaches momentum_tolerance, not "
                "what it converges to."),
-      key(&Numerics::partition_weights, "partition_weights").init().one_of({"cells", "work"})
-          .doc("What the partition over ranks balances: fluid cells, or work (a fluid cell "
-               "holding solids weighs as much as it costs against a gas-only one, from the "
-               "initial state or the restart snapshot's)."),
+      key(&Numerics::partition_weights, "partition_weights").init().one_of({"cells", "work", "phases"})
+          .doc("What the partition over ranks balances: fluid cells; work (a fluid cell "
+               "holding solids weighs as much as it costs against a gas-only one); or phases "
+               "(each rank its share of the fluid cells and of the cells holding solids, so that "
+               "the gas steps and the solids steps of the outer iteration are each balanced). "
+               "The last two from the initial state or the restart snapshot's."),
       key(&Numerics::repartition_imbalance, "repartition_imbalance").unit("-").init()
           .within(0.0, 10.0)
           .doc("On more than one rank, 0: the partition stays as the run started. x > 0: at each "

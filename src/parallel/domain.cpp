@@ -6,7 +6,7 @@ namespace bagnold::parallel {
 
 Domain::Domain(const deck::Deck& deck, const Communicator& comm) : Domain(deck, comm, {}) {}
 
-Domain::Domain(const deck::Deck& deck, const Communicator& comm, const std::vector<int>& weights)
+Domain::Domain(const deck::Deck& deck, const Communicator& comm, const PartitionWeights& weights)
     : grid(deck.grid),
       regions(grid::make_boundary_regions(deck)),
       flags(grid::classify_cells(grid, deck.geometry, regions)),

@@ -9,13 +9,14 @@
 #include "src/grid/cell_flags.hpp"
 #include "src/grid/structured_grid.hpp"
 #include "src/parallel/layout.hpp"
+#include "src/parallel/partition.hpp"
 
 namespace bagnold::parallel {
 
 struct Domain {
   Domain(const deck::Deck& deck, const Communicator& comm);
   // Partitioned by these weights of the fluid cells (partition.hpp).
-  Domain(const deck::Deck& deck, const Communicator& comm, const std::vector<int>& weights);
+  Domain(const deck::Deck& deck, const Communicator& comm, const PartitionWeights& weights);
   Domain(const Domain&) = delete;  // the layout points at the grid
   Domain& operator=(const Domain&) = delete;
 

@@ -18,7 +18,7 @@ const Index3 face_offsets[6] = {{-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0
 std::vector<idx_t> metis_parts(const grid::StructuredGrid& grid, const grid::CellFlags& flags,
                                const std::vector<std::int64_t>& fluid_cells,
                                const std::vector<idx_t>& vertex_of, int parts,
-                               const std::vector<int>& weights) {
+                               const PartitionWeights& weights) {
   std::vector<idx_t> xadj{0}, adjncy;
   xadj.reserve(fluid_cells.size() + 1);
   adjncy.reserve(6 * fluid_cells.size());
@@ -39,7 +39,7 @@ std::vector<idx_t> metis_parts(const grid::StructuredGrid& grid, const grid::Cel
     xadj.push_back(static_cast<idx_t>(adjncy.size()));
   }
   idx_t vertices = static_cast<idx_t>(fluid_cells.size());
-  idx_t constraints = 1;
+  idx_t constraints = weights.empty() ? 1 : weights.constraints;
   idx_t nparts = parts;
   idx_t cut = 0;
   idx_t options[METIS_NOPTIONS];
@@ -49,7 +49,7 @@ std::vector<idx_t> metis_parts(const grid::StructuredGrid& grid, const grid::Cel
   std::vector<idx_t> vertex_weights;
   if (!weights.empty())
     for (const auto c : fluid_cells)
-      vertex_weights.push_back(static_cast<idx_t>(weights[static_cast<std::size_t>(c)]));
+      for (int k = 0; k < weights.constraints; ++k) vertex_weights.push_back(static_cast<idx_t>(weights.at(c, k)));
   const int status = METIS_PartGraphKway(&vertices, &constraints, xadj.data(), adjncy.data(),
                                          vertex_weights.empty() ? nullptr : vertex_weights.data(),
                                          nullptr, nullptr, &nparts, nullptr, nullptr,
@@ -61,7 +61,7 @@ std::vector<idx_t> metis_parts(const grid::StructuredGrid& grid, const grid::Cel
 }  // namespace
 
 std::vector<int> partition_cells(const grid::StructuredGrid& grid, const grid::CellFlags& flags,
-                                 int parts, const std::vector<int>& weights) {
+                                 int parts, const PartitionWeights& weights) {
   const auto n = static_cast<std::size_t>(grid.extended_cell_count());
   std::vector<int> owner(n, -1);
   std::vector<std::int64_t> fluid_cells;

@@ -1,10 +1,11 @@
 #pragma once
 // Which rank owns each stored cell: a METIS k-way partition of the graph of fluid cells (edges
 // across faces, periodic wrap included), balancing the number of fluid cells per rank or, given
-// vertex weights, their summed weight (src/run/work_weights.hpp); then each boundary cell goes to the owner of an
-// adjacent fluid cell so boundary values sit with the cells that use them.
+// vertex weights, each of their sums (src/run/work_weights.hpp); then each boundary cell goes to
+// the owner of an adjacent fluid cell so boundary values sit with the cells that use them.
 // Every rank computes the same partition from the same (replicated) cell flags.
 
+#include <cstdint>
 #include <vector>
 
 #include "src/grid/cell_flags.hpp"
@@ -12,10 +13,21 @@
 
 namespace bagnold::parallel {
 
-// Owner rank per natural index of the extended box; -1 for excluded cells. `weights`: per
-// natural index of the extended box, each fluid cell's weight (≥ 1; other entries unused); empty:
-// every fluid cell weighs the same.
+// Vertex weights: `constraints` numbers per natural index of the extended box, in
+// values[constraints * natural + c] (the fluid cells' entries are used), each ≥ 0 and each
+// constraint's sum over the fluid cells > 0. METIS balances every constraint's sum (a
+// multi-constraint partition when there are more than one). Empty: every fluid cell weighs 1.
+struct PartitionWeights {
+  int constraints = 1;
+  std::vector<int> values;
+  bool empty() const { return values.empty(); }
+  int at(std::int64_t natural, int constraint) const {
+    return values[static_cast<std::size_t>(constraints * natural + constraint)];
+  }
+};
+
+// Owner rank per natural index of the extended box; -1 for excluded cells.
 std::vector<int> partition_cells(const grid::StructuredGrid& grid, const grid::CellFlags& flags,
-                                 int parts, const std::vector<int>& weights = {});
+                                 int parts, const PartitionWeights& weights = {});
 
 }  // namespace bagnold::parallel

@@ -1,38 +1,58 @@
-// Each fluid cell's work for the partition (work_weights.hpp).
+// The partition's weights from the state (work_weights.hpp).
 #include "src/run/work_weights.hpp"
 
 #include <fmt/format.h>
 
 #include <cstdint>
+#include <vector>
 
 namespace bagnold::run {
 
-std::vector<int> work_weights(const parallel::Domain& domain, const FlowState& state,
-                              double solids_threshold) {
+parallel::PartitionWeights partition_weights(const std::string& kind, const parallel::Domain& domain,
+                                             const FlowState& state, double solids_threshold) {
   const auto& layout = domain.layout;
-  std::vector<std::int64_t> summed(static_cast<std::size_t>(domain.grid.extended_cell_count()), 0);
-  for (int l = 0; l < layout.owned_fluid_count(); ++l)
-    summed[static_cast<std::size_t>(layout.natural(l))] =
-        state.solids_fraction[static_cast<std::size_t>(l)] > solids_threshold ? solids_cell_work
-                                                                              : gas_cell_work;
+  const bool by_phase = kind == "phases";
+  const int constraints = by_phase ? 2 : 1;
+  std::vector<std::int64_t> summed(
+      static_cast<std::size_t>(constraints * domain.grid.extended_cell_count()), 0);
+  for (int l = 0; l < layout.owned_fluid_count(); ++l) {
+    const bool solids = state.solids_fraction[static_cast<std::size_t>(l)] > solids_threshold;
+    const auto at = static_cast<std::size_t>(constraints * layout.natural(l));
+    if (by_phase) {
+      summed[at] = 1;
+      summed[at + 1] = solids ? 1 : 0;
+    } else {
+      summed[at] = solids ? solids_cell_work : gas_cell_work;
+    }
+  }
   layout.comm().sum_in_place(summed);
-  return {summed.begin(), summed.end()};
+  parallel::PartitionWeights weights{constraints, {summed.begin(), summed.end()}};
+  if (by_phase) {
+    std::int64_t solids_cells = 0;
+    for (std::size_t i = 1; i < summed.size(); i += 2) solids_cells += summed[i];
+    if (solids_cells == 0) weights = {1, std::vector<int>(summed.size() / 2, 1)};  // gas alone
+  }
+  return weights;
 }
 
-std::string work_partition_text(const parallel::Domain& domain, const std::vector<int>& weights) {
+std::string work_partition_text(const std::string& kind, const parallel::Domain& domain,
+                                const parallel::PartitionWeights& weights) {
   const auto& layout = domain.layout;
   const auto& comm = layout.comm();
-  std::int64_t work = 0;
-  for (int l = 0; l < layout.owned_fluid_count(); ++l)
-    work += weights[static_cast<std::size_t>(layout.natural(l))];
   const std::int64_t fluid = layout.owned_fluid_count();
-  const std::int64_t total = comm.sum(work);
-  const std::int64_t largest = comm.max(work);
-  const double mean = static_cast<double>(total) / comm.size();
-  return fmt::format("partition by work: fluid cells per rank {}..{}, work per rank {}..{} "
-                     "(imbalance {:.2f} %)",
-                     comm.min(fluid), comm.max(fluid), comm.min(work), largest,
-                     100.0 * (static_cast<double>(largest) / mean - 1.0));
+  std::string text = "partition by " + kind;
+  if (kind != "phases") text += fmt::format(", fluid cells per rank {}..{}", comm.min(fluid), comm.max(fluid));
+  for (int c = 0; c < weights.constraints; ++c) {
+    std::int64_t sum = 0;
+    for (int l = 0; l < layout.owned_fluid_count(); ++l) sum += weights.at(layout.natural(l), c);
+    const std::int64_t total = comm.sum(sum);
+    const std::int64_t largest = comm.max(sum);
+    const double mean = static_cast<double>(total) / comm.size();
+    const char* name = kind == "phases" ? (c == 0 ? "fluid cells" : "solids cells") : "work";
+    text += fmt::format("{} {} per rank {}..{} (imbalance {:.2f} %)", c == 0 && kind == "phases" ? ":" : ",", name, comm.min(sum), largest,
+                        mean > 0.0 ? 100.0 * (static_cast<double>(largest) / mean - 1.0) : 0.0);
+  }
+  return text;
 }
 
 }  // namespace bagnold::run

@@ -1,11 +1,13 @@
 // The per-rank counters (src/run/rank_balance.hpp) on a box 4 x 4 x 6 with solids in its lower
 // half: the ranks' owned fluid cells sum to the box's 96, their solids cells to the 48 below
 // z = 0.03, each rank counting exactly its own cells there; gathered in rank order on every rank.
+// The partition by phases (work_weights.hpp) gives every rank its share of both kinds of cell.
 // Run on 1, 2 and 3 ranks.
 #include <gtest/gtest.h>
 
 #include "src/run/initial_state.hpp"
 #include "src/run/rank_balance.hpp"
+#include "src/run/work_weights.hpp"
 #include "tests/support/deck_domain.hpp"
 #include "tests/support/test_decks.hpp"
 
@@ -79,6 +81,36 @@ TEST(RankBalance, TableGivesMaxOverMin) {
   EXPECT_EQ(run::rank_balance_line(ranks),
             "ranks: fluid cells max/min 1.00, solids cells inf, assembly 2.00, solves 2.00; "
             "wait 2.5–25.0 %; work max 4.8 % above the mean");  // work 80 and 88
+}
+
+}  // namespace
+}  // namespace bagnold::tests
+
+namespace bagnold::tests {
+namespace {
+
+TEST(RankBalance, PartitionByPhasesSharesOutBothKindsOfCell) {
+  const HalfFilledBox box;
+  const auto weights = run::partition_weights("phases", box.domain, box.state, 1e-6);
+  ASSERT_EQ(weights.constraints, 2);
+  const parallel::Domain by_phase(box.deck, parallel::Communicator(), weights);
+  run::FlowState state(by_phase.layout.local_count());
+  run::set_initial_state(box.deck, by_phase, state);
+  const auto ranks = run::gather_rank_counters(by_phase.layout.comm(),
+                                               run::count_rank(by_phase.layout, state, 1e-6, {}));
+  const double n = static_cast<double>(ranks.size());
+  for (const auto& r : ranks) {
+    // METIS's multi-constraint tolerance is 5 %; a cell more or less on these small counts.
+    EXPECT_NEAR(r.fluid_cells, 96.0 / n, 0.06 * 96.0 / n + 1.0);
+    EXPECT_NEAR(r.solids_cells, 48.0 / n, 0.06 * 48.0 / n + 1.0) << "each rank its share of the bed";
+  }
+  // The work weights: one constraint, a solids cell weighing solids_cell_work.
+  const auto work = run::partition_weights("work", box.domain, box.state, 1e-6);
+  EXPECT_EQ(work.constraints, 1);
+  long long total = 0;
+  for (std::int64_t c = 0; c < box.domain.grid.extended_cell_count(); ++c)
+    if (box.domain.flags.kind[static_cast<std::size_t>(c)] == grid::CellKind::fluid) total += work.at(c, 0);
+  EXPECT_EQ(total, 48 * run::gas_cell_work + 48 * run::solids_cell_work);
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 #include "src/run/work_weights.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <cstdint>
 #include <vector>
@@ -40,8 +41,8 @@ std::string work_partition_text(const std::string& kind, const parallel::Domain&
   const auto& layout = domain.layout;
   const auto& comm = layout.comm();
   const std::int64_t fluid = layout.owned_fluid_count();
-  std::string text = "partition by " + kind;
-  if (kind != "phases") text += fmt::format(", fluid cells per rank {}..{}", comm.min(fluid), comm.max(fluid));
+  std::vector<std::string> parts;
+  if (kind != "phases") parts.push_back(fmt::format("fluid cells per rank {}..{}", comm.min(fluid), comm.max(fluid)));
   for (int c = 0; c < weights.constraints; ++c) {
     std::int64_t sum = 0;
     for (int l = 0; l < layout.owned_fluid_count(); ++l) sum += weights.at(layout.natural(l), c);
@@ -49,9 +50,10 @@ std::string work_partition_text(const std::string& kind, const parallel::Domain&
     const std::int64_t largest = comm.max(sum);
     const double mean = static_cast<double>(total) / comm.size();
     const char* name = kind == "phases" ? (c == 0 ? "fluid cells" : "solids cells") : "work";
-    text += fmt::format("{} {} per rank {}..{} (imbalance {:.2f} %)", c == 0 && kind == "phases" ? ":" : ",", name, comm.min(sum), largest,
-                        mean > 0.0 ? 100.0 * (static_cast<double>(largest) / mean - 1.0) : 0.0);
+    parts.push_back(fmt::format("{} per rank {}..{} (imbalance {:.2f} %)", name, comm.min(sum), largest,
+                                mean > 0.0 ? 100.0 * (static_cast<double>(largest) / mean - 1.0) : 0.0));
   }
+  const std::string text = "partition by " + kind + ": " + fmt::format("{}", fmt::join(parts, ", "));
   return text;
 }
 

@@ -2,10 +2,10 @@
 // The vertex weights of a partition by the state (numerics.partition_weights):
 // - "work": one constraint, each fluid cell weighs what an outer iteration costs there, relative
 //   to a gas-only cell. A cell holding solids (ε_s above the solver's threshold) assembles and
-//   solves the solids rows and evaluates the closures and the drag; measured on the 5 mm bin on 2
-//   ranks, from the per-rank counters (src/run/rank_balance.hpp) of the partition by cells, where
-//   one rank holds only gas and the other the bed: its busy seconds (assembly and solves less MPI
-//   waits) per fluid cell, docs/benchmarks.md.
+//   solves the solids rows and evaluates the closures and the drag; measured on the 2.5 mm bin on
+//   2 ranks in steady discharge, from the per-rank counters (src/run/rank_balance.hpp) of the
+//   partition by cells, where one rank holds only gas and the other the bed: its busy seconds
+//   (assembly and solves less MPI waits) per fluid cell, docs/benchmarks.md.
 // - "phases": two constraints, fluid cells and fluid cells holding solids, so that every rank
 //   holds its share of each: the outer iteration's gas steps (gas momentum, pressure) cost by
 //   fluid cells and its solids steps (closures, solids momentum and volume fraction, whose rows
@@ -20,7 +20,7 @@
 namespace bagnold::run {
 
 inline constexpr int gas_cell_work = 10;     // a fluid cell without solids
-inline constexpr int solids_cell_work = 12;  // a fluid cell holding solids (measured 1.09–1.22)
+inline constexpr int solids_cell_work = 20;  // a fluid cell holding solids (measured 1.95)
 
 // The weights of numerics.partition_weights = `kind` ("work" or "phases") from `state` on
 // `domain` (a cell holds solids where ε_s > `solids_threshold`). The same on every rank.

@@ -55,17 +55,19 @@ TEST(RankBalance, ThresholdExcludesTraces) {
 }
 
 TEST(RankBalance, WorkImbalanceWeighsSolidsCellsAsThePartitionDoes) {
-  // Work 10 per gas cell, 12 per solids cell (work_weights.hpp).
+  // Work gas_cell_work per gas cell, solids_cell_work per solids cell (work_weights.hpp).
+  const double gas_work = run::gas_cell_work, solids_work = run::solids_cell_work;
   run::RankCounters gas, bed;
-  gas.fluid_cells = 800;  // all gas: 8000
+  gas.fluid_cells = 800;  // all gas
   bed.fluid_cells = 800;
-  bed.solids_cells = 800;  // all solids: 9600
-  EXPECT_NEAR(run::work_imbalance({gas, bed}), 9600.0 / 8800.0 - 1.0, 1e-15);
+  bed.solids_cells = 800;  // all solids
+  const double mean = 400.0 * (gas_work + solids_work);
+  EXPECT_NEAR(run::work_imbalance({gas, bed}), 800.0 * solids_work / mean - 1.0, 1e-15);
   EXPECT_NEAR(run::work_imbalance({bed, bed}), 0.0, 1e-15);
   run::RankCounters fewer = bed;
   fewer.fluid_cells = 700;
-  fewer.solids_cells = 700;  // 8400 against 9600: the largest is 6.7 % above the mean 9000
-  EXPECT_NEAR(run::work_imbalance({fewer, bed}), 9600.0 / 9000.0 - 1.0, 1e-15);
+  fewer.solids_cells = 700;  // the largest, 800 solids cells, against the mean of 750
+  EXPECT_NEAR(run::work_imbalance({fewer, bed}), 800.0 / 750.0 - 1.0, 1e-15);
   EXPECT_EQ(run::work_imbalance({}), 0.0);
   EXPECT_EQ(run::work_imbalance({run::RankCounters{}}), 0.0);
 }
@@ -80,7 +82,7 @@ TEST(RankBalance, TableGivesMaxOverMin) {
   EXPECT_NE(table.find("25.0"), std::string::npos) << "rank 0 waits 1 s of 4\n" << table;
   EXPECT_EQ(run::rank_balance_line(ranks),
             "ranks: fluid cells max/min 1.00, solids cells inf, assembly 2.00, solves 2.00; "
-            "wait 2.5–25.0 %; work max 4.8 % above the mean");  // work 80 and 88
+            "wait 2.5–25.0 %; work max 20.0 % above the mean");  // work 80 and 120
 }
 
 }  // namespace

@@ -171,9 +171,9 @@ SolveReport LinearSystem::run_ksp(Mat matrix, Vec rhs, Vec solution) {
   return report;
 }
 
-bool LinearSystem::split_decoupled_rows(std::vector<double>& x) {
+LinearSystem::DecoupledRows LinearSystem::split_decoupled_rows(std::vector<double>& x) {
   m_next_coupled.clear();
-  bool known_nonzero = false;
+  DecoupledRows known;
   for (std::int64_t r = 0; r < m_rows; ++r) {
     const auto ur = static_cast<std::size_t>(r);
     const std::int64_t row = m_first_row + r;
@@ -184,20 +184,23 @@ bool LinearSystem::split_decoupled_rows(std::vector<double>& x) {
       if (m_pattern.columns[uk] == row) diagonal += m_values[uk];
       else if (m_values[uk] != 0.0) coupled = true;
     }
-    // A zero diagonal on a decoupled row is a singular system: its Inf/NaN fails the solve.
-    if (coupled) m_next_coupled.push_back(static_cast<PetscInt>(row));
-    else x[ur] = m_rhs_values[ur] / diagonal, known_nonzero = known_nonzero || x[ur] != 0.0;
+    if (coupled) {
+      m_next_coupled.push_back(static_cast<PetscInt>(row));
+      continue;
+    }
+    x[ur] = m_rhs_values[ur] / diagonal;
+    known.nonzero = known.nonzero || x[ur] != 0.0;
+    known.finite = known.finite && std::isfinite(x[ur]);  // false: a zero diagonal, a singular system
   }
-  return known_nonzero;
+  return known;
 }
 
 SolveReport LinearSystem::solve_coupled_rows(std::vector<double>& x) {
-  const bool known_nonzero = split_decoupled_rows(x);
-  const bool finite = std::all_of(x.begin(), x.begin() + m_rows, [](double v) { return std::isfinite(v); });
+  const DecoupledRows known = split_decoupled_rows(x);
   // One reduction: did any rank's coupled rows change, is any known value nonzero or not
   // finite, how many coupled rows are there.
-  long long counts[4] = {m_coupled_built && m_next_coupled == m_coupled ? 0 : 1, known_nonzero ? 1 : 0,
-                         finite ? 0 : 1, static_cast<long long>(m_next_coupled.size())};
+  long long counts[4] = {m_coupled_built && m_next_coupled == m_coupled ? 0 : 1, known.nonzero ? 1 : 0,
+                         known.finite ? 0 : 1, static_cast<long long>(m_next_coupled.size())};
   MPI_Allreduce(MPI_IN_PLACE, counts, 4, MPI_LONG_LONG, MPI_SUM, m_comm);
   const bool changed = counts[0] > 0, any_known = counts[1] > 0, any_coupled = counts[3] > 0;
   if (changed) {
@@ -232,11 +235,11 @@ SolveReport LinearSystem::solve_coupled_rows(std::vector<double>& x) {
   if (any_known) {
     if (!m_known.get())
       petsc_check(MatCreateVecs(m_matrix.get(), m_known.out(), m_known_product.out()), "MatCreateVecs");
-    PetscScalar* known = nullptr;
-    petsc_check(VecGetArray(m_known.get(), &known), "VecGetArray");
-    std::copy(x.begin(), x.begin() + m_rows, known);
-    for (const PetscInt row : m_coupled) known[row - m_first_row] = 0.0;
-    petsc_check(VecRestoreArray(m_known.get(), &known), "VecRestoreArray");
+    PetscScalar* known_values = nullptr;
+    petsc_check(VecGetArray(m_known.get(), &known_values), "VecGetArray");
+    std::copy(x.begin(), x.begin() + m_rows, known_values);
+    for (const PetscInt row : m_coupled) known_values[row - m_first_row] = 0.0;
+    petsc_check(VecRestoreArray(m_known.get(), &known_values), "VecRestoreArray");
     petsc_check(MatMult(m_matrix.get(), m_known.get(), m_known_product.get()), "MatMult");
     petsc_check(VecGetArrayRead(m_known_product.get(), &known_product), "VecGetArrayRead");
   }

@@ -63,9 +63,12 @@ class LinearSystem {
   SolveReport run_ksp(Mat matrix, Vec rhs, Vec solution);
   // solve() under solve_decoupled_rows_directly, after the matrix and right-hand side are set.
   SolveReport solve_coupled_rows(std::vector<double>& x);
-  // Fills m_next_coupled with this rank's coupled rows (global) and x at the others; returns
-  // whether any directly solved value is nonzero.
-  bool split_decoupled_rows(std::vector<double>& x);
+  // Fills m_next_coupled with this rank's coupled rows (global) and x at the others (b / a_ii).
+  struct DecoupledRows {
+    bool nonzero = false;  // a directly solved value is nonzero (the coupled rows see it)
+    bool finite = true;    // every directly solved value is finite
+  };
+  DecoupledRows split_decoupled_rows(std::vector<double>& x);
 
   MPI_Comm m_comm;
   std::int64_t m_rows;

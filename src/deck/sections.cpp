@@ -419,8 +419,8 @@ const Section<Numerics>& numerics_section() {
                "snapshot, when the largest rank's work above the ranks' mean (its fluid cells weighed "
                "as partition_weights = \"work\" weighs them, from the current state) has grown "
                "by more than the fraction x since the partition was made, the ranks partition "
-               "the domain anew by "
-               "that work and continue from the snapshot just written, which carries the state "
+               "the domain anew from the current state (by phases under partition_weights = "
+               "\"phases\", else by work) and continue from the snapshot just written, which carries the state "
                "to its new owners. It moves cells between ranks, not the equations: the "
                "continuation agrees with one on the old partition to the solver tolerance."),
   }};

@@ -53,8 +53,7 @@ std::string work_partition_text(const std::string& kind, const parallel::Domain&
     parts.push_back(fmt::format("{} per rank {}..{} (imbalance {:.2f} %)", name, comm.min(sum), largest,
                                 mean > 0.0 ? 100.0 * (static_cast<double>(largest) / mean - 1.0) : 0.0));
   }
-  const std::string text = "partition by " + kind + ": " + fmt::format("{}", fmt::join(parts, ", "));
-  return text;
+  return fmt::format("partition by {}: {}", kind, fmt::join(parts, ", "));
 }
 
 }  // namespace bagnold::run

@@ -50,10 +50,10 @@ struct Chain {
     return p;
   }
 
-  // Row i: decoupled(i) gives diagonal 2, zero off-diagonals and b = rhs(i); otherwise the
-  // coupled row 3 x_i − x_{i−1} − x_{i+1} = 1 + i/10.
+  // Row i: decoupled(i) gives the diagonal `decoupled_diagonal`, zero off-diagonals and
+  // b = rhs(i); otherwise the coupled row 3 x_i − x_{i−1} − x_{i+1} = 1 + i/10.
   void fill(LinearSystem& system, const std::function<bool(std::int64_t)>& decoupled,
-            const std::function<double(std::int64_t)>& rhs) const {
+            const std::function<double(std::int64_t)>& rhs, double decoupled_diagonal = 2.0) const {
     for (std::int64_t i = first; i < first + rows_per_rank; ++i) {
       std::int64_t columns[3];
       double values[3];
@@ -61,7 +61,7 @@ struct Chain {
       for (std::int64_t j = i - 1; j <= i + 1; ++j) {
         if (j < 0 || j >= total) continue;
         columns[count] = j;
-        values[count++] = j == i ? (decoupled(i) ? 2.0 : 3.0) : (decoupled(i) ? 0.0 : -1.0);
+        values[count++] = j == i ? (decoupled(i) ? decoupled_diagonal : 3.0) : (decoupled(i) ? 0.0 : -1.0);
       }
       system.set_row(i, columns, values, count, decoupled(i) ? rhs(i) : 1.0 + 0.1 * static_cast<double>(i));
     }
@@ -143,17 +143,8 @@ TEST(LinearSystem, DecoupledRowWithZeroDiagonalFailsTheSolve) {
   const Chain chain;
   LinearSystem direct(MPI_COMM_WORLD, chain.pattern(), chain.first, "test_singular_", tight(true));
   // The last row of the chain (on the last rank) is empty: a singular system.
-  for (std::int64_t i = chain.first; i < chain.first + rows_per_rank; ++i) {
-    std::int64_t columns[3];
-    double values[3];
-    int count = 0;
-    for (std::int64_t j = i - 1; j <= i + 1; ++j) {
-      if (j < 0 || j >= chain.total) continue;
-      columns[count] = j;
-      values[count++] = i == chain.total - 1 ? 0.0 : (j == i ? 3.0 : -1.0);
-    }
-    direct.set_row(i, columns, values, count, 1.0);
-  }
+  chain.fill(direct, [&chain](std::int64_t i) { return i == chain.total - 1; },
+             [](std::int64_t) { return 1.0; }, 0.0);
   std::vector<double> x(rows_per_rank, 0.0);
   EXPECT_FALSE(direct.solve(x).converged);  // on every rank
 }

@@ -38,11 +38,12 @@ struct CarriedFractions {
 
 // The momentum predictor's output for the corrections: on every unknown face along d,
 //   u_m += d_m (p'_c − p'_n)    (both phases, pressure correction)
-//   u_s += e (ε'_c − ε'_n)      (solids, volume-fraction correction).
+//   u_s += e (K_c ε'_c − K_n ε'_n)   (solids, volume-fraction correction; K = dP_s/dε_s of
+//                                    each cell, so e is the response to a P_s difference).
 struct CorrectionResponse {
   explicit CorrectionResponse(std::size_t local_count);
   std::array<std::array<std::vector<double>, 3>, 2> pressure;  // d_m [m³ s/kg] per [phase][d]
-  std::array<std::vector<double>, 3> fraction;                 // e [m/s] per d
+  std::array<std::vector<double>, 3> fraction;                 // e [m³ s/kg] per d
 };
 
 }  // namespace bagnold::solver

@@ -14,7 +14,8 @@
 // The corrections' velocity responses come from the same 2 × 2 system with the relaxed
 // diagonals D_m (SIMPLEC: D_m − Σ a_nb):
 //   [D_g, −βV; −βV, D_s] (u'_g, u'_s) = (ε_g A, ε_s A) (p'_c − p'_n)  →  d_g, d_s,
-//   [D_g, −βV; −βV, D_s] (u'_g, u'_s) = (0, K A) (ε'_c − ε'_n)       →  e (solids), K = dP_s/dε_s.
+//   [D_g, −βV; −βV, D_s] (u'_g, u'_s) = (0, A) (P'_c − P'_n)          →  e (solids),
+// with P'_s = K ε' in each cell (K = dP_s/dε_s) applied by the fraction correction.
 // Residuals: Σ|R_m + βV u_other − A_m u_m| per phase, normalized as numerics.residual_normalization
 // says (momentum_residual.hpp).
 #include <algorithm>
@@ -175,26 +176,23 @@ bool MomentumPredictor::predict(int d, const Inputs& in, run::FlowState& state,
     const double D_s = s ? correction_diagonal(A_s / alpha, s->neighbours_a, settings.simplec) : 0.0;
     const double eps_g = g ? g->fraction : 0.0;
     const double eps_s = moves[solids] ? rows[solids][r].fraction : 0.0;
-    // K ≥ 0: a closure whose P_s falls with ε_s at fixed strain rate (kinetic theory in its
-    // dilute range) would make the correction anti-diffusive; that part stays explicit
-    // (counted as negative_stiffness). At an outlet the fluid cell's K alone (whatever the outflow cell's P_s, closures.hpp).
+    // A closure whose P_s falls with ε_s at fixed strain rate (kinetic theory in its dilute
+    // range) would make the correction anti-diffusive: the fraction correction takes K ≥ 0 and
+    // that part stays explicit (counted as negative_stiffness, faces with such a cell).
     const bool l_fluid = layout.kind(l) == grid::CellKind::fluid, n_fluid = layout.kind(n) == grid::CellKind::fluid;
-    const double K_l = l_fluid ? stiffness[ul] : 0.0;
-    const double K_n = n_fluid ? stiffness[static_cast<std::size_t>(n)] : 0.0;
-    const double K_face = l_fluid && n_fluid ? 0.5 * (K_l + K_n) : K_l + K_n;
-    if (s && K_face < 0.0) explicit_stiffness_faces += 1.0;
-    const double K = std::max(K_face, 0.0);
+    if (s && ((l_fluid && stiffness[ul] < 0.0) || (n_fluid && stiffness[static_cast<std::size_t>(n)] < 0.0)))
+      explicit_stiffness_faces += 1.0;
     double d_g = 0.0, d_s = 0.0, e = 0.0;
     if (g && s) {
       const double det = D_g * D_s - beta_v * beta_v;
       d_g = any.area * (eps_g * D_s + eps_s * beta_v) / det;
       d_s = any.area * (eps_s * D_g + eps_g * beta_v) / det;
-      e = any.area * K * D_g / det;
+      e = any.area * D_g / det;
     } else if (g) {
       d_g = eps_g * any.area / D_g;
     } else if (s) {
       d_s = eps_s * any.area / D_s;
-      e = any.area * K / D_s;
+      e = any.area / D_s;
     }
     response.pressure[gas][ud][ul] = d_g;
     response.pressure[solids][ud][ul] = d_s;

@@ -2,15 +2,18 @@
 //
 // Solids continuity in each fluid cell P, in volume (ρ_s constant), implicit Euler, upwind:
 //     R_P = (ε_P − ε_P^old) V / dt + Σ_faces A ε_up u_out.
-// With ε = ε* + ε' and, on every unknown face, u_s = u*_s + e (ε'_c − ε'_n) (e from the
-// predictor: the solids velocity's response to the solids-pressure difference through
-// K = dP_s/dε_s), the linearized equation is
-//     V/dt ε'_P + Σ_faces A [ε*_up e (ε'_P − ε'_nb) + u*_out ε'_up] = −R_P,
-// an M-matrix (non-symmetric: BiCGStab + block Jacobi). The e-terms act as a diffusion of ε' with
-// coefficient ε_s K: where the closure stiffens at the packing limit, the correction spreads
-// the excess instead of over-packing — this is what keeps dense beds stable without an
-// explicit, time-step-limiting solids pressure.
-// Then ε_s += ε', u_s += e (ε'_c − ε'_n); ε_g = 1 − ε_s.
+// With ε = ε* + ε' and, on every unknown face, u_s = u*_s + e (K_c ε'_c − K_n ε'_n) (e from the
+// predictor: the solids velocity's response to a solids-pressure difference; K = dP_s/dε_s of
+// each cell, at least 0, so K ε' is the cell's P_s change, as in MFIX's CORRECT_1), the
+// linearized equation is
+//     V/dt ε'_P + Σ_faces A [ε*_up e (K_P ε'_P − K_nb ε'_nb) + u*_out ε'_up] = −R_P,
+// an M-matrix by columns (non-symmetric: BiCGStab + block Jacobi). The e-terms act as a
+// diffusion of P_s' = K ε': where the closure stiffens at the packing limit, the correction
+// spreads the excess instead of over-packing — this is what keeps dense beds stable without an
+// explicit, time-step-limiting solids pressure. Each cell's own K matters where a packed cell
+// borders a loose one (the onset of a quasi-static pressure, K jumping by orders of magnitude
+// between them): a face mean of K would give the loose cell's ε' the packed cell's stiffness.
+// Then ε_s += ε', u_s += e (K_c ε'_c − K_n ε'_n); ε_g = 1 − ε_s.
 // Compression is damped (compression_limit.hpp) and ε_s kept ≥ 0. Outer iterations take the rest.
 // Its residual is Σ|R_P| / Σ ½ Σ_faces |A ε_up u| (at least the volume flux of the residual
 // velocity scale through every face): the local sums go into IterationSums::continuity[1].
@@ -48,6 +51,12 @@ bool VolumeFractionCorrection::correct(const run::FlowState& old, double dt,
   auto& eps = state.solids_fraction;
   const auto& u = state.solids_velocity;
   const auto& e = response.fraction;
+  // K ≥ 0 (momentum_predictor.cpp); 0 outside the fluid, where ε' = 0.
+  const auto stiffness = [&](int l) {
+    return layout.kind(l) == grid::CellKind::fluid
+               ? std::max(closures.pressure_derivative[static_cast<std::size_t>(l)], 0.0)
+               : 0.0;
+  };
   worst.reset(solids_continuity);
 
   double imbalance = 0.0, throughput = 0.0;
@@ -70,8 +79,8 @@ bool VolumeFractionCorrection::correct(const run::FlowState& old, double dt,
       const bool neighbour_free = layout.kind(f.neighbour) == grid::CellKind::fluid;  // boundary ε' = 0
       double off = 0.0;
       const double diffusion = f.area * eps_up * f.of(e);
-      a_p += diffusion;
-      off -= diffusion;
+      a_p += diffusion * stiffness(l);
+      off -= diffusion * stiffness(f.neighbour);
       if (upwind_is_l) a_p += f.area * std::abs(u_out);
       else off -= f.area * std::abs(u_out);
       if (neighbour_free) {
@@ -103,9 +112,10 @@ bool VolumeFractionCorrection::correct(const run::FlowState& old, double dt,
     auto& velocity = state.solids_velocity[ud];
     for (const int l : disc.velocity_numbering(d).owned_locals) {
       const int n = layout.neighbour(l, 2 * d + 1);
-      velocity[static_cast<std::size_t>(l)] += e[ud][static_cast<std::size_t>(l)] *
-                                               (m_correction[static_cast<std::size_t>(l)] -
-                                                m_correction[static_cast<std::size_t>(n)]);
+      velocity[static_cast<std::size_t>(l)] +=
+          e[ud][static_cast<std::size_t>(l)] *
+          (stiffness(l) * m_correction[static_cast<std::size_t>(l)] -
+           stiffness(n) * m_correction[static_cast<std::size_t>(n)]);
     }
     parallel::exchange_halo<double>(layout, velocity);
   }

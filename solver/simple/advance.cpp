@@ -100,7 +100,7 @@ StepResult FlowSolver::advance(run::FlowState& state, const run::FlowState& old,
       }
     }
     if (!std::isfinite(largest)) return result;  // diverged: the caller backs off
-    if (largest < m_settings.tolerance) {
+    if (iteration_converged(largest, m_settings.tolerance, sums)) {
       if (m_fraction) {
         for (int d = 0; d < 3; ++d) carry_fractions(m_discretization, state, solids, d, m_fields.carried);
         m_stepped_solids_flux = conserve_solids(m_discretization, m_fields.carried,

@@ -83,4 +83,8 @@ void WorstCells::reset(int equation) {
   m_local[static_cast<std::size_t>(equation)] = -1;
 }
 
+bool iteration_converged(double largest, double tolerance, const IterationSums& sums) {
+  return largest < tolerance && sums.interventions[compression_damped] == 0.0;
+}
+
 }  // namespace bagnold::solver

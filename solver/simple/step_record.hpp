@@ -63,6 +63,15 @@ struct IterationSums {
   void reduce(const parallel::Communicator& comm);
 };
 
+// Whether an outer iteration, its sums reduced over the ranks, ends the step: its largest
+// normalized residual is below the tolerance and no correction of the iteration was truncated.
+// Where CompressionLimit damped ε', that cell's solids continuity does not hold, however small
+// the residual summed over the domain (a few cells' imbalance hides in the sum), and the
+// conservative update after convergence (solids_conservation.hpp) would put the whole compression
+// back, into the closure's stiffest range: the next step then starts from a P_s orders of
+// magnitude too high (docs/solver.md, step 5).
+bool iteration_converged(double largest, double tolerance, const IterationSums& sums);
+
 // Where an equation's residual is largest: for the message when a run cannot continue. Always a
 // fluid cell; for a momentum equation also which of its faces carries the velocity and, when
 // that face is on the domain's boundary, the boundary region beyond it.

@@ -177,6 +177,20 @@ TEST(StepRecord, AStepThatFailedDivergedOnlyIfItsLargestResidualGrewOrBecameNonF
   EXPECT_TRUE(result.diverged());
 }
 
+TEST(StepRecord, AnIterationWithADampedCompressionDoesNotEndTheStep) {
+  solver::IterationSums sums;
+  EXPECT_TRUE(solver::iteration_converged(5e-5, 1e-4, sums));
+  EXPECT_FALSE(solver::iteration_converged(2e-4, 1e-4, sums));
+  EXPECT_FALSE(solver::iteration_converged(std::nan(""), 1e-4, sums));
+  // One cell's ε' damped anywhere (the sums are over all ranks): its continuity does not hold.
+  sums.interventions[solver::compression_damped] = 1.0;
+  EXPECT_FALSE(solver::iteration_converged(5e-5, 1e-4, sums));
+  // The other limiters do not hold the step.
+  sums.interventions[solver::compression_damped] = 0.0;
+  sums.interventions[solver::fraction_clamped_at_zero] = 3.0;
+  EXPECT_TRUE(solver::iteration_converged(5e-5, 1e-4, sums));
+}
+
 TEST(StallWatch, AStepStallsWhenItsLargestResidualHasNotFallenOverFiveIterations) {
   // MFIX's DETECT_STALL: checked at iterations 5, 10, 15, ...; from 15 on against the value 5
   // iterations before.

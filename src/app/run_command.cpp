@@ -118,10 +118,10 @@ int run_command(const DeckArguments& args) {
         deck.numerics.partition_weights == "cells" ? "work" : deck.numerics.partition_weights;
     parallel::PartitionWeights weights;      // of a partition by the state, else empty
     parallel::PartitionWeights repartition;  // the next segment's (numerics.repartition_imbalance)
-    const auto partition_by_work = [&](parallel::PartitionWeights by) {
+    const auto partition_by_state = [&](parallel::PartitionWeights by) {
       weights = std::move(by);
       prepared.domain = std::make_unique<parallel::Domain>(deck, comm, weights);
-      say(run::work_partition_text(weighing, *prepared.domain, weights));
+      say(run::partition_text(weighing, *prepared.domain, weights));
     };
     // One segment per partition: the run's start, then one after each repartition, which
     // continues from the snapshot the last segment ended with.
@@ -129,7 +129,7 @@ int run_command(const DeckArguments& args) {
       // The state on the partition by fluid cells; with numerics.partition_weights = "work" or
       // "phases" on more than one rank (or after a repartition), the partition weighted by that
       // state (work_weights.hpp), and the state again on it.
-      if (!repartition.empty()) partition_by_work(std::exchange(repartition, {}));
+      if (!repartition.empty()) partition_by_state(std::exchange(repartition, {}));
       run::FlowState state(0);
       StartPoint start;
       for (bool weighted = !weights.empty();; weighted = true) {
@@ -145,7 +145,7 @@ int run_command(const DeckArguments& args) {
           }
         }
         if (weighted || deck.numerics.partition_weights == "cells" || comm.size() == 1) break;
-        partition_by_work(run::partition_weights(weighing, *prepared.domain, state, solver::solids_threshold));
+        partition_by_state(run::partition_weights(weighing, *prepared.domain, state, solver::solids_threshold));
       }
       const parallel::Domain& domain = *prepared.domain;
       if (first_segment && !snapshot.empty()) {
@@ -204,7 +204,7 @@ int run_command(const DeckArguments& args) {
           rank_table = run::rank_balance_table(run::gather_rank_counters(comm, rank_counters(domain, state)));
         break;
       }
-      // Partition anew by the state's work; the next segment reads the state back from the
+      // Partition anew by the state (by work, or by phases); the next segment reads the state back from the
       // snapshot just written, each rank its new cells (the flow solver, output writer and
       // monitor of this segment, which hold the old partition, go out of scope first).
       repartition = run::partition_weights(weighing, domain, state, solver::solids_threshold);

@@ -39,7 +39,7 @@ std::vector<idx_t> metis_parts(const grid::StructuredGrid& grid, const grid::Cel
     xadj.push_back(static_cast<idx_t>(adjncy.size()));
   }
   idx_t vertices = static_cast<idx_t>(fluid_cells.size());
-  idx_t constraints = weights.empty() ? 1 : weights.constraints;
+  idx_t constraints = weights.constraints;
   idx_t nparts = parts;
   idx_t cut = 0;
   idx_t options[METIS_NOPTIONS];

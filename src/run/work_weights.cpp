@@ -36,8 +36,8 @@ parallel::PartitionWeights partition_weights(const std::string& kind, const para
   return weights;
 }
 
-std::string work_partition_text(const std::string& kind, const parallel::Domain& domain,
-                                const parallel::PartitionWeights& weights) {
+std::string partition_text(const std::string& kind, const parallel::Domain& domain,
+                           const parallel::PartitionWeights& weights) {
   const auto& layout = domain.layout;
   const auto& comm = layout.comm();
   const std::int64_t fluid = layout.owned_fluid_count();

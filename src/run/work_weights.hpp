@@ -30,7 +30,7 @@ parallel::PartitionWeights partition_weights(const std::string& kind, const para
 
 // "partition by work: fluid cells per rank 5120..7680, work per rank 81920..82560 (imbalance
 // 0.4 %)" for `weights` (of `kind`) on `domain`; by phases, each constraint's range. Collective.
-std::string work_partition_text(const std::string& kind, const parallel::Domain& domain,
-                                const parallel::PartitionWeights& weights);
+std::string partition_text(const std::string& kind, const parallel::Domain& domain,
+                           const parallel::PartitionWeights& weights);
 
 }  // namespace bagnold::run

@@ -85,12 +85,6 @@ TEST(RankBalance, TableGivesMaxOverMin) {
             "wait 2.5–25.0 %; work max 20.0 % above the mean");  // work 80 and 120
 }
 
-}  // namespace
-}  // namespace bagnold::tests
-
-namespace bagnold::tests {
-namespace {
-
 TEST(RankBalance, PartitionByPhasesSharesOutBothKindsOfCell) {
   const HalfFilledBox box;
   const auto weights = run::partition_weights("phases", box.domain, box.state, 1e-6);

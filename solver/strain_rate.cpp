@@ -1,5 +1,7 @@
 #include "solver/strain_rate.hpp"
 
+#include "src/grid/opening_faces.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -10,7 +12,7 @@ using grid::CellKind;
 void compute_strain_rate(const Discretization& discretization,
                          const std::array<std::vector<double>, 3>& velocity,
                          std::vector<double>& strain_rate, std::vector<double>& divergence,
-                         const std::vector<bool>& wall_shear_cells, StrainTensor* tensor) {
+                         const std::vector<WallGhost>& wall_ghosts, StrainTensor* tensor) {
   const auto& layout = discretization.layout();
   const auto local = static_cast<std::size_t>(layout.local_count());
   strain_rate.assign(local, 0.0);
@@ -23,20 +25,20 @@ void compute_strain_rate(const Discretization& discretization,
       const int minus = layout.neighbour(l, 2 * b), plus = layout.neighbour(l, 2 * b + 1);
       const double width = discretization.width(l, b);
       // What each side contributes: a fluid neighbour its centre value, half the two widths
-      // away (periodic wrap: a width away); a wall cell flagged in wall_shear_cells the ghost
-      // value −u_c a width away (the wall's zero half a cell away, as MFIX's ghost cells put
-      // the wall shear into γ̇); anything else the cell's own value at no distance (a one-sided
-      // difference).
-      enum class Side { fluid, wall, none };
+      // away (periodic wrap: a width away); a boundary cell with a no-slip ghost in wall_ghosts
+      // the value −u_c a width away (the wall's zero half a cell away, as MFIX's ghost cells put
+      // the wall shear into γ̇), with a mirror ghost +u_c a width away; anything else the
+      // cell's own value at no distance (a one-sided difference).
+      enum class Side { fluid, wall, mirror, none };
       auto side_of = [&](int neighbour) {
         if (neighbour < 0) return Side::none;
         if (layout.kind(neighbour) == CellKind::fluid) return Side::fluid;
-        return !wall_shear_cells.empty() && wall_shear_cells[static_cast<std::size_t>(neighbour)]
-                   ? Side::wall : Side::none;
+        const WallGhost ghost = wall_ghosts.empty() ? WallGhost::none : wall_ghosts[static_cast<std::size_t>(neighbour)];
+        return ghost == WallGhost::no_slip ? Side::wall : ghost == WallGhost::mirror ? Side::mirror : Side::none;
       };
       auto distance = [&](Side side, int neighbour) {
         return side == Side::fluid ? 0.5 * (width + discretization.width(neighbour, b))
-               : side == Side::wall ? width : 0.0;
+               : side == Side::none ? 0.0 : width;
       };
       const Side lower_side = side_of(minus), upper_side = side_of(plus);
       if (lower_side == Side::none && upper_side == Side::none) continue;
@@ -73,9 +75,9 @@ void compute_strain_rate(const Discretization& discretization,
     for (auto& component : *tensor) parallel::exchange_halo<double>(layout, component);
 }
 
-std::vector<bool> wall_shear_cells(const parallel::Domain& domain,
-                                   const std::vector<bool>& wall_shear_regions, bool beside_openings) {
-  std::vector<bool> flagged;
+std::vector<WallGhost> wall_shear_cells(const parallel::Domain& domain,
+                                        const std::vector<bool>& wall_shear_regions, bool beside_openings) {
+  std::vector<WallGhost> flagged;
   if (std::find(wall_shear_regions.begin(), wall_shear_regions.end(), true) == wall_shear_regions.end())
     return flagged;
   const auto& layout = domain.layout;
@@ -84,11 +86,9 @@ std::vector<bool> wall_shear_cells(const parallel::Domain& domain,
     if (domain.flags.kind[static_cast<std::size_t>(n)] != CellKind::boundary) return false;
     const int region = domain.flags.region[static_cast<std::size_t>(n)];
     if (region < 0) return false;
-    const auto type = domain.regions.types[static_cast<std::size_t>(region)];
-    return type == grid::BoundaryType::pressure_outflow || type == grid::BoundaryType::pressure_inflow ||
-           type == grid::BoundaryType::mass_inflow;
+    return grid::is_opening(domain.regions.types[static_cast<std::size_t>(region)]);
   };
-  flagged.assign(static_cast<std::size_t>(layout.local_count()), false);
+  flagged.assign(static_cast<std::size_t>(layout.local_count()), WallGhost::none);
   for (int l = 0; l < layout.local_count(); ++l) {
     if (layout.kind(l) != CellKind::boundary) continue;
     const int region = layout.region(l);
@@ -102,7 +102,7 @@ std::vector<bool> wall_shear_cells(const parallel::Domain& domain,
         beside_opening = grid.step(ijk, offset, to) && is_opening(grid.natural(to));
       }
     }
-    flagged[static_cast<std::size_t>(l)] = !beside_opening;
+    flagged[static_cast<std::size_t>(l)] = beside_opening ? WallGhost::mirror : WallGhost::no_slip;
   }
   return flagged;
 }

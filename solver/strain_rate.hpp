@@ -13,6 +13,7 @@
 // With `tensor`, also D's six components per local cell (symmetric_component orders them).
 
 #include <array>
+#include <cstdint>
 #include <vector>
 
 #include "solver/discretization.hpp"
@@ -25,19 +26,24 @@ inline constexpr int symmetric_component(int a, int b) {
   return a == b ? a : a + b + 2;  // (0,1) → 3, (0,2) → 4, (1,2) → 5
 }
 
+// What a boundary cell beside a fluid cell gives γ̇'s stencil there: nothing (a one-sided
+// difference), a no-slip ghost (−u_c a width away: the wall's shear) or a free-slip ghost
+// (+u_c a width away: half the one-sided difference), as MFIX's ghost cells.
+enum class WallGhost : std::uint8_t { none, no_slip, mirror };
+
 void compute_strain_rate(const Discretization& discretization,
                          const std::array<std::vector<double>, 3>& velocity,
                          std::vector<double>& strain_rate, std::vector<double>& divergence,
-                         const std::vector<bool>& wall_shear_cells = {},
+                         const std::vector<WallGhost>& wall_ghosts = {},
                          StrainTensor* tensor = nullptr);
 
-// Per local cell: whether it is a boundary cell whose shear enters γ̇: a cell of a region flagged
-// in wall_shear_regions (per boundary region: a stationary wall that does not let the solids
-// slip), unless beside_openings is false and one of its six face neighbours (in the whole grid,
-// stored on this rank or not) is a boundary cell of an opening: pressure outflow or inflow, or
-// mass inflow (numerics.wall_shear_beside_openings; MFIX's SET_FLAGS). Empty when no region is
-// flagged.
-std::vector<bool> wall_shear_cells(const parallel::Domain& domain,
-                                   const std::vector<bool>& wall_shear_regions, bool beside_openings);
+// Per local cell, the ghost it is in γ̇: no_slip for a boundary cell of a region flagged in
+// wall_shear_regions (per boundary region: a stationary wall that does not let the solids slip),
+// mirror instead when beside_openings is false and one of its six face neighbours (in the whole
+// grid, stored on this rank or not) is a boundary cell of an opening: pressure outflow or
+// inflow, or mass inflow (numerics.wall_shear_beside_openings; MFIX's SET_FLAGS makes those
+// wall cells free-slip for γ̇); none elsewhere. Empty when no region is flagged.
+std::vector<WallGhost> wall_shear_cells(const parallel::Domain& domain,
+                                        const std::vector<bool>& wall_shear_regions, bool beside_openings);
 
 }  // namespace bagnold::solver

@@ -45,6 +45,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "src/grid/opening_faces.hpp"
 #include "solver/simple/face_fractions.hpp"
 #include "solver/simple/momentum_rows.hpp"
 #include "solver/strain_rate.hpp"
@@ -90,6 +91,19 @@ void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d
     const int n = layout.neighbour(l, 2 * d + 1);
     pair_viscosity[static_cast<std::size_t>(l)] = n >= 0 ? mean(viscosity(l), viscosity(n)) : viscosity(l);
   }
+  // numerics.shear_on_opening_faces = false: an edge with an opening's outside cell among its
+  // four cells (c, n and their neighbours across the face) shears nothing, as MFIX's zero
+  // viscosity in flow-boundary cells (SET_EPMUS_VALUES) makes its harmonic edge means.
+  const auto& regions = disc.domain().regions;
+  auto opening = [&](int cell) {
+    if (cell < 0 || layout.kind(cell) != grid::CellKind::boundary || layout.region(cell) < 0) return false;
+    return grid::is_opening(regions.types[static_cast<std::size_t>(layout.region(cell))]);
+  };
+  auto unsheared_edge = [&](int c, int n, int face) {
+    return !in.settings.shear_on_opening_faces &&
+           (opening(c) || opening(n) || opening(layout.neighbour(c, face)) ||
+            (n >= 0 && opening(layout.neighbour(n, face))));
+  };
   // Newton: the implicit part of each face's viscous coefficient is the tangent's, μ_s f_de
   // (ClosureFields::tangent_factor); the rest, (D − D_t)(u_nb − u_P), acts on the iterate.
   const auto& factors = in.closures.tangent_factor;
@@ -164,7 +178,9 @@ void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d
         const double vn = nv >= 0 ? un_e * carried_e[static_cast<std::size_t>(nv)] : 0.0;
         flux_out = s * rho * (vc * half_c + vn * half_n) * disc.width(l, t);
         const double area = (half_c + half_n) * disc.width(l, t);
-        if (link.kind == LinkKind::wall) {
+        if (unsheared_edge(l, n, face)) {
+          // No shear on this face (numerics.shear_on_opening_faces); convection as elsewhere.
+        } else if (link.kind == LinkKind::wall) {
           // No slip: μ A/δ. A solids partial-slip wall: c_w A, c_w ≤ μ_s/δ (solids_wall.hpp).
           if (phase == solids && walls && walls->partial(link)) {
             diffusion = walls->coefficient(disc, state, in.closures, link, l, d, face,

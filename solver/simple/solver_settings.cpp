@@ -25,6 +25,7 @@ SolverSettings::SolverSettings(const deck::Deck& deck, const parallel::Domain& d
       bulk_viscosity_ratio(deck.numerics.solids_bulk_viscosity_ratio),
       viscosity_average(deck::choice_value(deck::viscosity_average_choices,
                                            deck.numerics.viscosity_average, "viscosity average")),
+      shear_on_opening_faces(deck.numerics.shear_on_opening_faces),
       viscosity_linearization(deck::choice_value(deck::viscosity_linearization_choices,
                                                  deck.numerics.viscosity_linearization,
                                                  "viscosity linearization")),

@@ -42,6 +42,7 @@ struct SolverSettings {
   bool net_force_residual = false;
   double bulk_viscosity_ratio = 0.0;  // numerics.solids_bulk_viscosity_ratio: λ_s += r μ_s
   deck::ViscosityAverage viscosity_average = deck::ViscosityAverage::arithmetic;
+  bool shear_on_opening_faces = true;  // numerics.shear_on_opening_faces
   deck::ViscosityLinearization viscosity_linearization = deck::ViscosityLinearization::picard;
   double vacant_fraction = 1e-8;  // numerics.vacant_fraction: Θ = 0 at or below this ε_s
 };

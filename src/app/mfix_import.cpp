@@ -650,6 +650,9 @@ void Translator::numerics_and_output() {
   // MFIX's SET_FLAGS makes every no-slip wall cell beside a flow boundary free-slip in the
   // strain rate (not in the momentum equations); Bagnold's default keeps that wall's shear.
   out_ << "wall_shear_beside_openings = false   # as MFIX's SET_FLAGS (docs/import-mfix.md)\n";
+  // MFIX's flow-boundary cells have zero viscosity, which its harmonic edge means carry to every
+  // edge of an opening's velocity faces: they feel no wall shear.
+  out_ << "shear_on_opening_faces = false   # as MFIX's zero viscosity in flow cells (docs/import-mfix.md)\n";
   // MFIX discretize(n): 0 first-order upwind (the default), 2 Superbee, 6 MUSCL, 7 van Leer,
   // 8 minmod; Bagnold has one scheme for every equation.
   static const std::map<int, std::string> schemes = {

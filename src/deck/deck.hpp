@@ -150,6 +150,7 @@ struct Numerics {
   bool wall_shear_in_strain_rate = true;  // no-slip walls' shear in the wall cells' γ̇
   bool wall_shear_beside_openings = true;  // false: not from wall cells beside an opening (MFIX)
   std::string viscosity_average = "arithmetic";  // arithmetic | harmonic
+  bool shear_on_opening_faces = true;  // false: an opening's velocity faces feel no wall or edge shear (MFIX)
   std::string viscosity_linearization = "picard";  // picard | newton
   double solids_bulk_viscosity_ratio = 0.0;  // r μ_s added to the closure's λ_s
   double pressure_shear_rate_relaxation_time = 0.0;  // τ_P [s]: P_s at γ̇ relaxed over τ_P

@@ -352,13 +352,22 @@ const Section<Numerics>& numerics_section() {
       key(&Numerics::wall_shear_beside_openings, "wall_shear_beside_openings").init()
           .doc("With wall_shear_in_strain_rate, whether a no-slip wall cell that has an opening "
                "(pressure outflow or inflow, mass inflow) as a face neighbour puts its shear into "
-               "the strain rate too. false: in the strain rate only, such a wall cell counts as a "
-               "free-slip wall does (a one-sided difference; the momentum equations keep the "
-               "no-slip wall), as MFIX's SET_FLAGS makes every wall cell beside a flow boundary "
-               "free-slip (MFIX's free-slip ghost holds +u_c, which halves that one-sided "
-               "difference); it lowers the strain rate, and raises the frictional viscosity, in "
-               "the cells beside an orifice's rim. import-mfix sets false; on the 10 mm MFIX bin it moves the "
-               "discharge by -5 % (docs/import-mfix.md)."),
+               "the strain rate too. false: in the strain rate only, such a wall cell holds a "
+               "free-slip ghost (+u_c a width away; the momentum equations keep the no-slip "
+               "wall), as MFIX's SET_FLAGS makes every wall cell beside a flow boundary "
+               "free-slip; it lowers the strain rate, and raises the frictional viscosity, in "
+               "the cells beside an orifice's rim. import-mfix sets false (docs/import-mfix.md)."),
+      key(&Numerics::shear_on_opening_faces, "shear_on_opening_faces").init()
+          .doc("Whether the velocity faces of an opening (pressure outflow or inflow), whose "
+               "control volumes lie half in the opening's outside cell and half in the fluid "
+               "cell beside it, feel the shear of the walls and faces beside them. true: with "
+               "the mean viscosity of those two cells, the outside cell's being 0 (with "
+               "arithmetic means, the half of the control volume inside the domain is sheared, "
+               "as under a stress-free exit). false: none, as in MFIX, whose flow-boundary "
+               "cells have zero viscosity (SET_EPMUS_VALUES) that its harmonic edge means "
+               "(GET_VCELL_SDIFF_TERMS) carry to every edge of those faces: material in an "
+               "orifice's face slides along its rim. import-mfix sets false "
+               "(docs/import-mfix.md)."),
       key(&Numerics::viscosity_average, "viscosity_average").init()
           .one_of(choice_names(viscosity_average_choices))
           .doc("How the viscosity on a control-volume edge is made from the four cells around it: "

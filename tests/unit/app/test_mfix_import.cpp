@@ -183,13 +183,16 @@ TEST(MfixImport, ToleranceIsBagnoldsOwnAndTolResidIsNoted) {
   EXPECT_EQ(malformed.unsupported[0].keyword, "tol_resid");
 }
 
-TEST(MfixImport, WallCellsBesideFlowBoundariesLeaveTheirShearOutOfTheStrainRate) {
-  // MFIX's SET_FLAGS: a no-slip wall cell beside a flow boundary is free-slip in γ̇ (moves the
-  // imported 10 mm bin from 250.8 to 238.2 g/s, MFIX 237.8; cases/bin/mfix/README.md).
+TEST(MfixImport, OpeningsTakeMfixsTreatmentOfTheWallsBesideThem) {
+  // MFIX's SET_FLAGS: a no-slip wall cell beside a flow boundary is free-slip in γ̇; MFIX's zero
+  // viscosity in flow-boundary cells: an opening's velocity faces feel no wall shear (without
+  // it the imported 10 mm bin jams; cases/bin/mfix/README.md).
   const auto result = import_text(box_deck(""));
   EXPECT_TRUE(contains(result.deck, "wall_shear_beside_openings = false   # as MFIX's SET_FLAGS"))
       << result.deck;
-  // That the key exists and loads: cli_import_mfix_bin_* run `bagnold check` on the imports.
+  EXPECT_TRUE(contains(result.deck, "shear_on_opening_faces = false   # as MFIX's zero viscosity"))
+      << result.deck;
+  // That the keys exist and load: cli_import_mfix_bin_* run `bagnold check` on the imports.
 }
 
 TEST(MfixImport, DetectStallIsCarriedOverWithMfixsDefaultOn) {

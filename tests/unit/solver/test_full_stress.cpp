@@ -212,5 +212,54 @@ TEST(FullStress, TwoLayerCouetteProfileIsExactWithHarmonicViscosities) {
   EXPECT_GT(couette_imbalance("arithmetic"), 0.1);  // the interface's edge viscosity is wrong
 }
 
+// numerics.shear_on_opening_faces: a plug w = W over a 1 cm hole in the floor of a 3 × 3 × 3
+// box (μ_s = 1 Pa s in every fluid cell, 0 in the outflow cell, as the closures leave it).
+// The hole's face row, half in the outflow cell, is held back by the floor's and the other
+// faces' shear by default (its edges take the mean of the two cells' viscosities), and feels no
+// shear with the key false (MFIX); every other row is the same either way.
+std::string box_with_a_hole(bool shear_on_opening_faces) {
+  return unit_deck(3, 3, 3, "", 0.0,
+                   two_fluid("plastic", false) +
+                       "[[boundary]]\nname = \"hole\"\ntype = \"pressure_outflow\"\nface = \"z-\"\n"
+                       "min = [0.01, 0.01, -1.0]\nmax = [0.02, 0.02, 0.0]\npressure = 101325.0\n"
+                       "[numerics]\nshear_on_opening_faces = " +
+                       (shear_on_opening_faces ? "true" : "false") + "\n");
+}
+
+std::vector<double> plug_over_a_hole(StressRows& s, double speed) {
+  for (int l = 0; l < s.c.local_count(); ++l) {
+    const auto i = static_cast<std::size_t>(l);
+    s.c.state.solids_fraction[i] = 0.5;
+    const bool unknown = s.c.disc.faces(solids).kind[2][i] == solver::FaceClass::unknown;
+    s.c.state.solids_velocity[2][i] = unknown ? speed : 0.0;  // the walls' faces at rest
+    s.fields.viscosity[solids][i] = s.c.fluid(l) ? 1.0 : 0.0;
+  }
+  s.c.old = s.c.state;
+  return s.stress_force(solids, 2);
+}
+
+TEST(FullStress, AnOpeningsFaceIsShearedUnlessMfixsRuleIsChosen) {
+  const double speed = -0.4, mu = 1.0, width = 0.01;
+  StressRows sheared_rows(box_with_a_hole(true)), free_rows(box_with_a_hole(false));
+  const auto sheared = plug_over_a_hole(sheared_rows, speed);
+  const auto free = plug_over_a_hole(free_rows, speed);
+  ASSERT_EQ(sheared.size(), free.size());
+  const auto& numbering = sheared_rows.c.disc.velocity_numbering(2);
+  int hole_rows = 0;
+  for (std::size_t r = 0; r < sheared.size(); ++r) {
+    const int l = numbering.owned_locals[r];
+    const auto x = sheared_rows.c.face_position(l, 2);
+    if (std::abs(x[2]) < 1e-12) {
+      ++hole_rows;
+      // Each of the four walls beside it: (μ/2) |W| A/(w/2), A = w²/2 (the half inside).
+      EXPECT_NEAR(sheared[r], 4.0 * 0.5 * mu * -speed * 0.5 * width * width / (0.5 * width), 1e-12);
+      EXPECT_NEAR(free[r], 0.0, 1e-12);
+    } else {
+      EXPECT_NEAR(free[r], sheared[r], 1e-12) << "row at z = " << x[2];
+    }
+  }
+  EXPECT_EQ(sheared_rows.c.sum(static_cast<double>(hole_rows)), 1.0);
+}
+
 }  // namespace
 }  // namespace bagnold::tests

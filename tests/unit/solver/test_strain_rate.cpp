@@ -1,5 +1,6 @@
 // Strain-rate invariants from staggered velocities: exact for linear velocity fields, on uniform
-// and stretched grids, with walls (one-sided differences), on 1 and 2 ranks.
+// and stretched grids, with walls (one-sided differences, no-slip and free-slip ghosts), on 1
+// and 2 ranks.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -123,6 +124,37 @@ TEST(StrainRate, WallCellsBesideAnOpeningCanLeaveTheirShearOut) {
           speed / width * std::sqrt((floor || lid ? 1.0 : 0.0) + (y_wall ? 1.0 : 0.0));
       EXPECT_NEAR(gamma_dot[static_cast<std::size_t>(l)], expected, 1e-9)
           << "cell " << ijk[0] << ", " << ijk[1] << ", " << ijk[2] << ", beside_openings " << beside_openings;
+    }
+  }
+}
+
+// The same floor under a shear u_x = G z (the profile vanishes at the floor, z = 0): a no-slip
+// ghost (−u_c a width away) gives the fluid cell above the wall the exact G, and so does the
+// one-sided difference above the outflow cell, where there is no wall. With
+// wall_shear_beside_openings = false the floor cell beside the outflow holds MFIX's free-slip
+// ghost (+u_c a width away): G/2 in the fluid cell above it, half the one-sided G.
+TEST(StrainRate, WallCellsBesideAnOpeningHoldAFreeSlipGhost) {
+  const std::string outlet =
+      "[[boundary]]\nname = \"orifice\"\ntype = \"pressure_outflow\"\nface = \"z-\"\n"
+      "min = [0.0, 0.0, -1.0]\nmax = [0.01, 0.03, 0.0]\npressure = 101325.0\n";
+  const auto deck = deck::load_deck_text(box_deck(4, 3, 4, outlet), "strain.toml", {});
+  const parallel::Domain domain(deck, parallel::Communicator());
+  const double shear = 3.0;
+  const double a[3][3] = {{0, 0, shear}, {0, 0, 0}, {0, 0, 0}};
+  const auto u = linear_field(domain, a);
+  const solver::Discretization discretization(domain);
+  std::vector<bool> walls(domain.regions.regions.size(), false);
+  walls[static_cast<std::size_t>(domain.regions.default_region())] = true;
+  for (const bool beside_openings : {true, false}) {
+    const auto ghosts = solver::wall_shear_cells(domain, walls, beside_openings);
+    std::vector<double> gamma_dot, divergence;
+    solver::compute_strain_rate(discretization, u, gamma_dot, divergence, ghosts);
+    for (int l = 0; l < domain.layout.owned_fluid_count(); ++l) {
+      const auto ijk = domain.layout.index3(l);
+      if (ijk[2] != 0 || ijk[1] != 1) continue;  // the bottom row, away from the y walls
+      const double expected = ijk[0] == 1 && !beside_openings ? 0.5 * shear : shear;
+      EXPECT_NEAR(gamma_dot[static_cast<std::size_t>(l)], expected, 1e-9)
+          << "cell " << ijk[0] << ", beside_openings " << beside_openings;
     }
   }
 }

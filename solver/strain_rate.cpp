@@ -76,9 +76,11 @@ void compute_strain_rate(const Discretization& discretization,
 }
 
 std::vector<WallGhost> wall_shear_cells(const parallel::Domain& domain,
-                                        const std::vector<bool>& wall_shear_regions, bool beside_openings) {
+                                        const std::vector<bool>& wall_shear_regions, bool beside_openings,
+                                        bool copy_into_openings) {
   std::vector<WallGhost> flagged;
-  if (std::find(wall_shear_regions.begin(), wall_shear_regions.end(), true) == wall_shear_regions.end())
+  if (!copy_into_openings &&
+      std::find(wall_shear_regions.begin(), wall_shear_regions.end(), true) == wall_shear_regions.end())
     return flagged;
   const auto& layout = domain.layout;
   const auto& grid = domain.grid;
@@ -92,7 +94,14 @@ std::vector<WallGhost> wall_shear_cells(const parallel::Domain& domain,
   for (int l = 0; l < layout.local_count(); ++l) {
     if (layout.kind(l) != CellKind::boundary) continue;
     const int region = layout.region(l);
-    if (region < 0 || !wall_shear_regions[static_cast<std::size_t>(region)]) continue;
+    if (region < 0) continue;
+    const auto type = domain.regions.types[static_cast<std::size_t>(region)];
+    if (copy_into_openings && (type == grid::BoundaryType::pressure_outflow ||
+                               type == grid::BoundaryType::pressure_inflow)) {
+      flagged[static_cast<std::size_t>(l)] = WallGhost::mirror;
+      continue;
+    }
+    if (!wall_shear_regions[static_cast<std::size_t>(region)]) continue;
     bool beside_opening = false;
     if (!beside_openings) {
       const grid::Index3 ijk = layout.index3(l);

@@ -42,8 +42,11 @@ void compute_strain_rate(const Discretization& discretization,
 // mirror instead when beside_openings is false and one of its six face neighbours (in the whole
 // grid, stored on this rank or not) is a boundary cell of an opening: pressure outflow or
 // inflow, or mass inflow (numerics.wall_shear_beside_openings; MFIX's SET_FLAGS makes those
-// wall cells free-slip for γ̇); none elsewhere. Empty when no region is flagged.
+// wall cells free-slip for γ̇); mirror for a pressure outflow or inflow cell when
+// copy_into_openings (numerics.copy_velocity_into_openings; MFIX's SET_OUTFLOW); none elsewhere.
+// Empty when no cell has a ghost.
 std::vector<WallGhost> wall_shear_cells(const parallel::Domain& domain,
-                                        const std::vector<bool>& wall_shear_regions, bool beside_openings);
+                                        const std::vector<bool>& wall_shear_regions, bool beside_openings,
+                                        bool copy_into_openings = false);
 
 }  // namespace bagnold::solver

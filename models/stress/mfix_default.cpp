@@ -16,6 +16,11 @@ namespace bagnold::models::mfix_default {
 namespace {
 using std::numbers::pi;
 
+// Schaeffer's stress in MFIX is 2 μ D with no second viscosity (FRICTION_SCHAEFFER in
+// calc_mu_s.f sets LAMBDA_s_p = 0), so its isotropic part 2μ/3 tr D is a bulk viscosity ⅔ μ in
+// Bagnold's σ = 2μ S + λ (tr D) I.
+double schaeffer_bulk_viscosity(double friction_viscosity) { return 2.0 / 3.0 * friction_viscosity; }
+
 // The algebraic kinetic theory's coefficients per power of T: P = pressure·T, μ = shear·√T,
 // λ = bulk·√T (the bulk viscosity: MFIX's second viscosity LAMBDA_s plus ⅔μ), and the
 // collisional dissipation Γ = dissipation·T^{3/2}. Both theories share Γ and the collisional
@@ -126,6 +131,7 @@ void MfixDefault::evaluate(const Material& material, const SolidsState& in,
       p.pressure_derivative = plastic.derivative;
       p.shear_viscosity =
           m_limits.rate_independent_viscosity(p.pressure * sin_friction_angle, shear_rate);
+      p.bulk_viscosity = schaeffer_bulk_viscosity(p.shear_viscosity);
       return p;
     }
     const Dual fraction = Dual::variable(phi);
@@ -164,18 +170,19 @@ void MfixDefault::evaluate_at_temperature(const Material& material, const Solids
     const auto k = lun1984::point_terms(phi, theta, in.drag[i], 0.0, 0.0, material);
     double pressure = k.pressure_per_temperature.value * theta;
     double derivative = k.pressure_per_temperature.slope * theta;
-    double viscosity = m_limits.capped(k.shear_viscosity);
+    const double viscosity = m_limits.capped(k.shear_viscosity);
+    double friction = 0.0;
     if (plastic) {
       const auto star = m_constants.plastic.at(phi);
       pressure += star.pressure;
       derivative += star.derivative;
       const double rate = deviatoric_shear_rate(in.strain_rate[i], in.divergence[i]);
-      viscosity += m_limits.rate_independent_viscosity(star.pressure * sin_friction_angle, rate);
+      friction = m_limits.rate_independent_viscosity(star.pressure * sin_friction_angle, rate);
     }
     out.pressure[i] = pressure;
     out.pressure_derivative[i] = derivative;
-    out.shear_viscosity[i] = viscosity;
-    out.bulk_viscosity[i] = k.bulk_viscosity;
+    out.shear_viscosity[i] = viscosity + friction;
+    out.bulk_viscosity[i] = k.bulk_viscosity + schaeffer_bulk_viscosity(friction);
     out.granular_temperature[i] = theta;
   }
 }

@@ -8,14 +8,15 @@
 //  - plastic regime (ε_g < ε_g*): the plastic pressure P* = A (ε_g* − ε_g)^n
 //    (A = 10²⁴ Pa, n = 10: MFIX's 10²⁵ dyn/cm²; plastic_pressure.hpp) with Schaeffer's (1987)
 //    frictional viscosity μ = P* sin φ_f /(2 √I₂D) = P* sin φ_f / γ̇_s, capped (MFIX: 1000 poise =
-//    100 Pa s); the kinetic stresses and T are zero there, as in MFIX.
+//    100 Pa s), and MFIX's zero second viscosity with it (its stress 2 μ D: a bulk viscosity
+//    λ = ⅔ μ here); the kinetic stresses and T are zero there, as in MFIX.
 // The switch at ε_g* is discontinuous in P_s, exactly as in MFIX (docs/models.md).
 // With granular_energy = "transport" (kinetic_theory "lun" only: MFIX solves its granular
 // energy equation with LUN_1984, and Syamlal's theory is algebraic) Θ is transported
 // (lun_granular_energy.hpp) and the stresses are MFIX's with GRANULAR_ENERGY = .TRUE.:
 // P_s = the kinetic pressure at Θ (+ P* in the plastic regime), μ_s = the kinetic viscosity
 // (+ Schaeffer's frictional one in the plastic regime, where Θ is held at 0 as MFIX's
-// SOLVE_GRANULAR_ENERGY does), λ_s = η μ_b; no dilute limit (the stresses at a given Θ vanish
+// SOLVE_GRANULAR_ENERGY does), λ_s = η μ_b (+ ⅔ of the frictional μ); no dilute limit (the stresses at a given Θ vanish
 // as φ → 0 on their own). Called without Θ (the rheometer, the deck checks) it answers as the
 // algebraic form with the same kinetic_theory.
 

@@ -39,13 +39,13 @@ Closures::Closures(const deck::Deck& deck, const Discretization& discretization)
     m_stress = models::stress_registry().create(deck.models.solids_stress.name,
                                                 deck.models.solids_stress.coefficients);
     // A stationary wall whose law does not let the solids slip puts its shear into γ̇.
-    if (deck.numerics.wall_shear_in_strain_rate) {
-      const auto laws = solids_wall_laws(deck, domain.regions, *m_stress);
-      std::vector<bool> regions;
-      for (std::size_t r = 0; r < laws.size(); ++r)
-        regions.push_back(domain.regions.types[r] == grid::BoundaryType::no_slip_wall && !laws[r]->slips());
-      m_wall_shear_cells = wall_shear_cells(domain, regions, deck.numerics.wall_shear_beside_openings);
-    }
+    const auto laws = solids_wall_laws(deck, domain.regions, *m_stress);
+    std::vector<bool> regions;
+    for (std::size_t r = 0; r < laws.size(); ++r)
+      regions.push_back(deck.numerics.wall_shear_in_strain_rate &&
+                        domain.regions.types[r] == grid::BoundaryType::no_slip_wall && !laws[r]->slips());
+    m_wall_shear_cells = wall_shear_cells(domain, regions, deck.numerics.wall_shear_beside_openings,
+                                          deck.numerics.copy_velocity_into_openings);
   }
   // Outflow cells whose P_s is their fluid neighbour's (solids_pressure = "zero-gradient").
   const auto& layout = discretization.layout();

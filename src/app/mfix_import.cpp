@@ -653,6 +653,8 @@ void Translator::numerics_and_output() {
   // MFIX's flow-boundary cells have zero viscosity, which its harmonic edge means carry to every
   // edge of an opening's velocity faces: they feel no wall shear.
   out_ << "shear_on_opening_faces = false   # as MFIX's zero viscosity in flow cells (docs/import-mfix.md)\n";
+  // MFIX's SET_OUTFLOW copies the fluid cell's tangential velocities into a PO or PI cell.
+  out_ << "copy_velocity_into_openings = true   # as MFIX's SET_OUTFLOW (docs/import-mfix.md)\n";
   // MFIX discretize(n): 0 first-order upwind (the default), 2 Superbee, 6 MUSCL, 7 van Leer,
   // 8 minmod; Bagnold has one scheme for every equation.
   static const std::map<int, std::string> schemes = {

@@ -149,6 +149,7 @@ struct Numerics {
   double relax_velocity = 0.7;           // α_u
   bool wall_shear_in_strain_rate = true;  // no-slip walls' shear in the wall cells' γ̇
   bool wall_shear_beside_openings = true;  // false: not from wall cells beside an opening (MFIX)
+  bool copy_velocity_into_openings = false;  // true: openings hold the fluid's velocity in γ̇ (MFIX)
   std::string viscosity_average = "arithmetic";  // arithmetic | harmonic
   bool shear_on_opening_faces = true;  // false: an opening's velocity faces feel no wall or edge shear (MFIX)
   std::string viscosity_linearization = "picard";  // picard | newton

@@ -357,6 +357,14 @@ const Section<Numerics>& numerics_section() {
                "wall), as MFIX's SET_FLAGS makes every wall cell beside a flow boundary "
                "free-slip; it lowers the strain rate, and raises the frictional viscosity, in "
                "the cells beside an orifice's rim. import-mfix sets false (docs/import-mfix.md)."),
+      key(&Numerics::copy_velocity_into_openings, "copy_velocity_into_openings").init()
+          .doc("In the strain rate only: whether the outside cell of a pressure outflow or "
+               "inflow holds its fluid neighbour's tangential velocity (a zero-gradient ghost a "
+               "width away, as MFIX's SET_OUTFLOW copies the velocities into its outflow "
+               "cells: half the one-sided difference) instead of adding nothing (false: a "
+               "one-sided difference at the fluid cell). It lowers the strain rate, and raises "
+               "the frictional viscosity, in the cells of an orifice. import-mfix sets true "
+               "(docs/import-mfix.md)."),
       key(&Numerics::shear_on_opening_faces, "shear_on_opening_faces").init()
           .doc("Whether the velocity faces of an opening (pressure outflow or inflow), whose "
                "control volumes lie half in the opening's outside cell and half in the fluid "

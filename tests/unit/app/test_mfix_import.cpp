@@ -186,11 +186,14 @@ TEST(MfixImport, ToleranceIsBagnoldsOwnAndTolResidIsNoted) {
 TEST(MfixImport, OpeningsTakeMfixsTreatmentOfTheWallsBesideThem) {
   // MFIX's SET_FLAGS: a no-slip wall cell beside a flow boundary is free-slip in γ̇; MFIX's zero
   // viscosity in flow-boundary cells: an opening's velocity faces feel no wall shear (without
-  // it the imported 10 mm bin jams; cases/bin/mfix/README.md).
+  // it the imported 10 mm bin jams; cases/bin/mfix/README.md); SET_OUTFLOW: an outflow cell
+  // holds its fluid neighbour's velocity.
   const auto result = import_text(box_deck(""));
   EXPECT_TRUE(contains(result.deck, "wall_shear_beside_openings = false   # as MFIX's SET_FLAGS"))
       << result.deck;
   EXPECT_TRUE(contains(result.deck, "shear_on_opening_faces = false   # as MFIX's zero viscosity"))
+      << result.deck;
+  EXPECT_TRUE(contains(result.deck, "copy_velocity_into_openings = true   # as MFIX's SET_OUTFLOW"))
       << result.deck;
   // That the keys exist and load: cli_import_mfix_bin_* run `bagnold check` on the imports.
 }

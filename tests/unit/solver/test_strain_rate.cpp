@@ -132,7 +132,8 @@ TEST(StrainRate, WallCellsBesideAnOpeningCanLeaveTheirShearOut) {
 // ghost (−u_c a width away) gives the fluid cell above the wall the exact G, and so does the
 // one-sided difference above the outflow cell, where there is no wall. With
 // wall_shear_beside_openings = false the floor cell beside the outflow holds MFIX's free-slip
-// ghost (+u_c a width away): G/2 in the fluid cell above it, half the one-sided G.
+// ghost (+u_c a width away): G/2 in the fluid cell above it, half the one-sided G; with
+// copy_velocity_into_openings the outflow cell holds the same (MFIX's SET_OUTFLOW): G/2 above it.
 TEST(StrainRate, WallCellsBesideAnOpeningHoldAFreeSlipGhost) {
   const std::string outlet =
       "[[boundary]]\nname = \"orifice\"\ntype = \"pressure_outflow\"\nface = \"z-\"\n"
@@ -145,18 +146,19 @@ TEST(StrainRate, WallCellsBesideAnOpeningHoldAFreeSlipGhost) {
   const solver::Discretization discretization(domain);
   std::vector<bool> walls(domain.regions.regions.size(), false);
   walls[static_cast<std::size_t>(domain.regions.default_region())] = true;
-  for (const bool beside_openings : {true, false}) {
-    const auto ghosts = solver::wall_shear_cells(domain, walls, beside_openings);
-    std::vector<double> gamma_dot, divergence;
-    solver::compute_strain_rate(discretization, u, gamma_dot, divergence, ghosts);
-    for (int l = 0; l < domain.layout.owned_fluid_count(); ++l) {
-      const auto ijk = domain.layout.index3(l);
-      if (ijk[2] != 0 || ijk[1] != 1) continue;  // the bottom row, away from the y walls
-      const double expected = ijk[0] == 1 && !beside_openings ? 0.5 * shear : shear;
-      EXPECT_NEAR(gamma_dot[static_cast<std::size_t>(l)], expected, 1e-9)
-          << "cell " << ijk[0] << ", beside_openings " << beside_openings;
+  for (const bool beside_openings : {true, false})
+    for (const bool copy : {false, true}) {
+      const auto ghosts = solver::wall_shear_cells(domain, walls, beside_openings, copy);
+      std::vector<double> gamma_dot, divergence;
+      solver::compute_strain_rate(discretization, u, gamma_dot, divergence, ghosts);
+      for (int l = 0; l < domain.layout.owned_fluid_count(); ++l) {
+        const auto ijk = domain.layout.index3(l);
+        if (ijk[2] != 0 || ijk[1] != 1) continue;  // the bottom row, away from the y walls
+        const bool halved = (ijk[0] == 1 && !beside_openings) || (ijk[0] == 0 && copy);
+        EXPECT_NEAR(gamma_dot[static_cast<std::size_t>(l)], halved ? 0.5 * shear : shear, 1e-9)
+            << "cell " << ijk[0] << ", beside_openings " << beside_openings << ", copy " << copy;
+      }
     }
-  }
 }
 
 }  // namespace

@@ -104,11 +104,11 @@ TEST(MfixDefaultTransport, StressesAtTheTransportedTemperature) {
     EXPECT_DOUBLE_EQ(t[i], theta[i]);
   }
   // Plastic regime (φ > 1 − ε_g* = 0.58): Θ held at 0, P* = 10²⁴ (φ − 0.58)¹⁰ and Schaeffer's
-  // P* sin 30°/γ̇, capped at 100 Pa s.
+  // P* sin 30°/γ̇, capped at 100 Pa s, with MFIX's zero second viscosity (a bulk ⅔ μ).
   EXPECT_EQ(t[2], 0.0);
   EXPECT_NEAR(p[2], 1e24 * std::pow(0.02, 10), 1e-9 * p[2]);
   EXPECT_DOUBLE_EQ(mu[2], 100.0);
-  EXPECT_EQ(lambda[2], 0.0);
+  EXPECT_DOUBLE_EQ(lambda[2], 2.0 / 3.0 * 100.0);
 }
 
 TEST(MfixDefaultTransport, OnlyLunsTheoryIsTransported) {

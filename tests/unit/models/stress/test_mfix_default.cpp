@@ -91,7 +91,8 @@ TEST(MfixDefault, SyamlalAlgebraicTemperatureIsMfixsGtAlgebraic) {
 }
 
 TEST(MfixDefault, PlasticRegimeHasPlasticPressureAndSchaefferViscosity) {
-  // ε_g < ε_g* = 0.4: P* = 10²⁴ (φ − 0.6)^10 Pa; τ = P* sin 30° (Schaeffer); T = 0.
+  // ε_g < ε_g* = 0.4: P* = 10²⁴ (φ − 0.6)^10 Pa; τ = P* sin 30° (Schaeffer); T = 0; no second
+  // viscosity.
   const auto uncapped = make_model("mfix-default", {{"max_viscosity", 1e12}});
   Material m;
   const double rate = 1e4;
@@ -102,6 +103,8 @@ TEST(MfixDefault, PlasticRegimeHasPlasticPressureAndSchaefferViscosity) {
   // γ̇_min = 1e-3 changes τ by (γ̇_min/γ̇)²/2 = 5e-15.
   EXPECT_NEAR(s.shear_viscosity * rate, 0.5 * plastic, 1e-12 * plastic);
   EXPECT_EQ(s.granular_temperature, 0.0);
+  // MFIX's Schaeffer stress is 2 μ D (LAMBDA_s_p = 0): a bulk viscosity of ⅔ μ.
+  EXPECT_NEAR(s.bulk_viscosity, 2.0 / 3.0 * s.shear_viscosity, 1e-15 * s.shear_viscosity);
   // MFIX caps the Schaeffer viscosity at 1000 poise = 100 Pa s by default.
   EXPECT_DOUBLE_EQ(probe(*make_model("mfix-default"), m, 0.65, 1.0).shear_viscosity, 100.0);
 }

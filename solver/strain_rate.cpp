@@ -101,7 +101,9 @@ std::vector<WallGhost> wall_shear_cells(const parallel::Domain& domain,
       flagged[static_cast<std::size_t>(l)] = WallGhost::mirror;
       continue;
     }
-    if (!wall_shear_regions[static_cast<std::size_t>(region)]) continue;
+    if (static_cast<std::size_t>(region) >= wall_shear_regions.size() ||
+        !wall_shear_regions[static_cast<std::size_t>(region)])
+      continue;
     bool beside_opening = false;
     if (!beside_openings) {
       const grid::Index3 ijk = layout.index3(l);

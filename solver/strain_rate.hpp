@@ -5,8 +5,9 @@
 //   discretization.hpp), exact for linear fields;
 //   ∇u by central differences of the cell-centred velocities between the two face neighbours,
 //   one-sided where a neighbour is not fluid, zero where neither is; where it is a boundary cell
-//   flagged in wall_shear_cells (per local cell; empty: none: wall_shear_cells below), the
-//   tangential components take the ghost value −u_c there, so the wall shear enters γ̇;
+//   with a ghost in wall_ghosts (per local cell; empty: none: wall_shear_cells below), the
+//   tangential components take the ghost value there: −u_c (a no-slip wall, whose shear then
+//   enters γ̇) or +u_c (a free-slip ghost), a width away;
 //   D = ½ (∇u + ∇uᵀ),  γ̇ = sqrt(2 D:D) (model-notes.md: simple shear u_x = γ̇ z gives γ̇),
 //   tr D = ∂u/∂x + ∂v/∂y + ∂w/∂z (from the face velocities directly: exact discrete divergence).
 // Computed for owned fluid cells; the halo is exchanged; other cells get zero.

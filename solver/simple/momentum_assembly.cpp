@@ -33,6 +33,9 @@
 //       its side, u_e on the edge's two faces of c and n, δ_d the distance between their centres;
 //       zero on a wall, where u_e vanishes, at a partial-slip wall, whose law gives the whole wall
 //       stress, and at an opening).
+// With numerics.shear_on_opening_faces = false an edge with an opening's outside cell among its
+// four cells has neither D nor the cross part (MFIX's zero viscosity in flow cells), for both
+// phases and every opening (pressure outflow or inflow, mass inflow).
 // Sources: ε_m (P_c − P_n) A; for the solids also (P_s,c − P_s,n) A (an outflow cell's P_s as
 // its region's solids_pressure says: its fluid neighbour's, or 0; closures.hpp);
 // ((λ − ⅔ μ)∇·u)_n − ((λ − ⅔ μ)∇·u)_c) A over the fluid cells (∇·u = 0 beyond them, as an

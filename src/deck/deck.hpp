@@ -148,7 +148,7 @@ struct Numerics {
   double vacant_fraction = 1e-8;         // ε_s at or below which Θ = 0 (granular energy equation)
   double relax_velocity = 0.7;           // α_u
   bool wall_shear_in_strain_rate = true;  // no-slip walls' shear in the wall cells' γ̇
-  bool wall_shear_beside_openings = true;  // false: not from wall cells beside an opening (MFIX)
+  bool wall_shear_beside_openings = true;  // false: wall cells beside an opening free-slip in γ̇ (MFIX)
   bool copy_velocity_into_openings = false;  // true: openings hold the fluid's velocity in γ̇ (MFIX)
   std::string viscosity_average = "arithmetic";  // arithmetic | harmonic
   bool shear_on_opening_faces = true;  // false: an opening's velocity faces feel no wall or edge shear (MFIX)

@@ -212,11 +212,16 @@ TEST(FullStress, TwoLayerCouetteProfileIsExactWithHarmonicViscosities) {
   EXPECT_GT(couette_imbalance("arithmetic"), 0.1);  // the interface's edge viscosity is wrong
 }
 
-// numerics.shear_on_opening_faces: a plug w = W over a 1 cm hole in the floor of a 3 × 3 × 3
-// box (μ_s = 1 Pa s in every fluid cell, 0 in the outflow cell, as the closures leave it).
-// The hole's face row, half in the outflow cell, is held back by the floor's and the other
-// faces' shear by default (its edges take the mean of the two cells' viscosities), and feels no
-// shear with the key false (MFIX); every other row is the same either way.
+// numerics.shear_on_opening_faces: a plug over a 1 cm hole in the floor of a 3 × 3 × 3 box
+// (μ_s = 1 Pa s in every fluid cell, 0 in the outflow cell, as the closures leave it), the
+// walls' faces at rest. Moving down (w = W), the hole's face row, half in the outflow cell, is
+// held back by the floor's and the other faces' shear by default (its edges take the mean of the
+// two cells' viscosities) and feels none with the key false (MFIX); every other z-row is the
+// same either way. Sliding along x (u = U), the x-row of the face x = 1 cm over the hole's
+// edge (c over the floor, n over the hole) loses the shear of its floor edge, half over the
+// outflow cell, and only it: the row at x = 2 cm, whose own cell c is over the hole, takes the
+// outflow cell's open condition across that edge either way (velocity_faces.cpp,
+// side_condition looks at the cell under c first).
 std::string box_with_a_hole(bool shear_on_opening_faces) {
   return unit_deck(3, 3, 3, "", 0.0,
                    two_fluid("plastic", false) +
@@ -226,23 +231,23 @@ std::string box_with_a_hole(bool shear_on_opening_faces) {
                        (shear_on_opening_faces ? "true" : "false") + "\n");
 }
 
-std::vector<double> plug_over_a_hole(StressRows& s, double speed) {
+std::vector<double> plug_over_a_hole(StressRows& s, int d, double speed) {
   for (int l = 0; l < s.c.local_count(); ++l) {
     const auto i = static_cast<std::size_t>(l);
     s.c.state.solids_fraction[i] = 0.5;
-    const bool unknown = s.c.disc.faces(solids).kind[2][i] == solver::FaceClass::unknown;
-    s.c.state.solids_velocity[2][i] = unknown ? speed : 0.0;  // the walls' faces at rest
+    const bool unknown = s.c.disc.faces(solids).kind[static_cast<std::size_t>(d)][i] == solver::FaceClass::unknown;
+    s.c.state.solids_velocity[static_cast<std::size_t>(d)][i] = unknown ? speed : 0.0;
     s.fields.viscosity[solids][i] = s.c.fluid(l) ? 1.0 : 0.0;
   }
   s.c.old = s.c.state;
-  return s.stress_force(solids, 2);
+  return s.stress_force(solids, d);
 }
 
 TEST(FullStress, AnOpeningsFaceIsShearedUnlessMfixsRuleIsChosen) {
   const double speed = -0.4, mu = 1.0, width = 0.01;
   StressRows sheared_rows(box_with_a_hole(true)), free_rows(box_with_a_hole(false));
-  const auto sheared = plug_over_a_hole(sheared_rows, speed);
-  const auto free = plug_over_a_hole(free_rows, speed);
+  const auto sheared = plug_over_a_hole(sheared_rows, 2, speed);
+  const auto free = plug_over_a_hole(free_rows, 2, speed);
   ASSERT_EQ(sheared.size(), free.size());
   const auto& numbering = sheared_rows.c.disc.velocity_numbering(2);
   int hole_rows = 0;
@@ -259,6 +264,27 @@ TEST(FullStress, AnOpeningsFaceIsShearedUnlessMfixsRuleIsChosen) {
     }
   }
   EXPECT_EQ(sheared_rows.c.sum(static_cast<double>(hole_rows)), 1.0);
+
+  // Sliding along x: the rows of the faces x = 1 and 2 cm at the hole's y, in the bottom layer.
+  StressRows sheared_x(box_with_a_hole(true)), free_x(box_with_a_hole(false));
+  const auto sheared_u = plug_over_a_hole(sheared_x, 0, speed);
+  const auto free_u = plug_over_a_hole(free_x, 0, speed);
+  const auto& numbering_x = sheared_x.c.disc.velocity_numbering(0);
+  int over_the_hole = 0;
+  for (std::size_t r = 0; r < sheared_u.size(); ++r) {
+    const auto x = sheared_x.c.face_position(numbering_x.owned_locals[r], 0);
+    const bool over = std::abs(x[1] - 0.015) < 1e-12 && std::abs(x[2] - 0.005) < 1e-12 &&
+                      x[0] > 0.005 && x[0] < 0.025;
+    if (over) {
+      ++over_the_hole;
+      // The floor edge's shear by default: μ |U| A/(w/2), A = w² (both cells fluid, μ = 1).
+      const double edge = x[0] < 0.015 ? mu * -speed * width * width / (0.5 * width) : 0.0;
+      EXPECT_NEAR(sheared_u[r] - free_u[r], edge, 1e-12) << "x-row at x = " << x[0];
+    } else {
+      EXPECT_NEAR(free_u[r], sheared_u[r], 1e-12) << "x-row at " << x[0] << ", " << x[1] << ", " << x[2];
+    }
+  }
+  EXPECT_EQ(sheared_x.c.sum(static_cast<double>(over_the_hole)), 2.0);
 }
 
 }  // namespace

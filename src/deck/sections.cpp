@@ -366,16 +366,17 @@ const Section<Numerics>& numerics_section() {
                "the frictional viscosity, in the cells of an orifice. import-mfix sets true "
                "(docs/import-mfix.md)."),
       key(&Numerics::shear_on_opening_faces, "shear_on_opening_faces").init()
-          .doc("Whether the velocity faces of an opening (pressure outflow or inflow), whose "
-               "control volumes lie half in the opening's outside cell and half in the fluid "
-               "cell beside it, feel the shear of the walls and faces beside them. true: with "
-               "the mean viscosity of those two cells, the outside cell's being 0 (with "
-               "arithmetic means, the half of the control volume inside the domain is sheared, "
-               "as under a stress-free exit). false: none, as in MFIX, whose flow-boundary "
-               "cells have zero viscosity (SET_EPMUS_VALUES) that its harmonic edge means "
-               "(GET_VCELL_SDIFF_TERMS) carry to every edge of those faces: material in an "
-               "orifice's face slides along its rim. import-mfix sets false "
-               "(docs/import-mfix.md)."),
+          .doc("Whether the velocity faces of an opening (pressure outflow or inflow, mass "
+               "inflow), whose control volumes lie half in the opening's outside cell and half "
+               "in the fluid cell beside it, feel the shear of the walls and faces beside them. "
+               "true: with the mean viscosity of those two cells (the solids' is 0 in the "
+               "outside cell, so with arithmetic means the half of the control volume inside "
+               "the domain is sheared, as under a stress-free exit). false: no shear on any "
+               "edge with an opening's outside cell among its four cells, for both phases, as "
+               "in MFIX, whose flow-boundary cells have zero viscosity (SET_EPMUS_VALUES, "
+               "SET_EPMUG_VALUES) that its harmonic edge means (GET_VCELL_SDIFF_TERMS) carry to "
+               "those edges: material in an orifice's face slides along its rim. import-mfix "
+               "sets false (docs/import-mfix.md)."),
       key(&Numerics::viscosity_average, "viscosity_average").init()
           .one_of(choice_names(viscosity_average_choices))
           .doc("How the viscosity on a control-volume edge is made from the four cells around it: "

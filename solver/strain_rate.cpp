@@ -75,7 +75,7 @@ void compute_strain_rate(const Discretization& discretization,
     for (auto& component : *tensor) parallel::exchange_halo<double>(layout, component);
 }
 
-std::vector<WallGhost> wall_shear_cells(const parallel::Domain& domain,
+std::vector<WallGhost> strain_rate_ghosts(const parallel::Domain& domain,
                                         const std::vector<bool>& wall_shear_regions, bool beside_openings,
                                         bool copy_into_openings) {
   std::vector<WallGhost> flagged;
@@ -84,12 +84,7 @@ std::vector<WallGhost> wall_shear_cells(const parallel::Domain& domain,
     return flagged;
   const auto& layout = domain.layout;
   const auto& grid = domain.grid;
-  auto is_opening = [&](grid::Natural n) {
-    if (domain.flags.kind[static_cast<std::size_t>(n)] != CellKind::boundary) return false;
-    const int region = domain.flags.region[static_cast<std::size_t>(n)];
-    if (region < 0) return false;
-    return grid::is_opening(domain.regions.types[static_cast<std::size_t>(region)]);
-  };
+  auto is_opening = [&](grid::Natural n) { return grid::is_opening_cell(domain.flags, domain.regions, n); };
   flagged.assign(static_cast<std::size_t>(layout.local_count()), WallGhost::none);
   for (int l = 0; l < layout.local_count(); ++l) {
     if (layout.kind(l) != CellKind::boundary) continue;

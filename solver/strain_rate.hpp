@@ -5,7 +5,7 @@
 //   discretization.hpp), exact for linear fields;
 //   ∇u by central differences of the cell-centred velocities between the two face neighbours,
 //   one-sided where a neighbour is not fluid, zero where neither is; where it is a boundary cell
-//   with a ghost in wall_ghosts (per local cell; empty: none: wall_shear_cells below), the
+//   with a ghost in wall_ghosts (per local cell; empty: none: strain_rate_ghosts below), the
 //   tangential components take the ghost value there: −u_c (a no-slip wall, whose shear then
 //   enters γ̇) or +u_c (a free-slip ghost), a width away;
 //   D = ½ (∇u + ∇uᵀ),  γ̇ = sqrt(2 D:D) (model-notes.md: simple shear u_x = γ̇ z gives γ̇),
@@ -46,7 +46,7 @@ void compute_strain_rate(const Discretization& discretization,
 // wall cells free-slip for γ̇); mirror for a pressure outflow or inflow cell when
 // copy_into_openings (numerics.copy_velocity_into_openings; MFIX's SET_OUTFLOW); none elsewhere.
 // Empty when no cell has a ghost.
-std::vector<WallGhost> wall_shear_cells(const parallel::Domain& domain,
+std::vector<WallGhost> strain_rate_ghosts(const parallel::Domain& domain,
                                         const std::vector<bool>& wall_shear_regions, bool beside_openings,
                                         bool copy_into_openings = false);
 

@@ -44,7 +44,7 @@ Closures::Closures(const deck::Deck& deck, const Discretization& discretization)
     for (std::size_t r = 0; r < laws.size(); ++r)
       regions.push_back(deck.numerics.wall_shear_in_strain_rate &&
                         domain.regions.types[r] == grid::BoundaryType::no_slip_wall && !laws[r]->slips());
-    m_wall_shear_cells = wall_shear_cells(domain, regions, deck.numerics.wall_shear_beside_openings,
+    m_strain_rate_ghosts = strain_rate_ghosts(domain, regions, deck.numerics.wall_shear_beside_openings,
                                           deck.numerics.copy_velocity_into_openings);
   }
   // Outflow cells whose P_s is their fluid neighbour's (solids_pressure = "zero-gradient").
@@ -106,7 +106,7 @@ void Closures::evaluate_solids_stress(const Discretization& discretization, run:
   if (!m_stress) return;
 
   compute_strain_rate(discretization, state.solids_velocity, fields.strain_rate,
-                      fields.divergence[solids], m_wall_shear_cells, m_newton ? &m_tensor : nullptr);
+                      fields.divergence[solids], m_strain_rate_ghosts, m_newton ? &m_tensor : nullptr);
   const double weight = m_relaxation_time > 0.0 ? dt / m_relaxation_time : 0.0;
   const bool transported = m_stress->granular_energy() != nullptr;
   m_cells.clear();

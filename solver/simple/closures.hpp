@@ -72,7 +72,7 @@ class Closures {
   std::vector<std::pair<int, int>> m_outflow_copies;
   std::unique_ptr<models::DragLaw> m_drag;              // null without both phases
   std::unique_ptr<models::SolidsStressModel> m_stress;  // null unless the solids move
-  std::vector<WallGhost> m_wall_shear_cells;  // per local cell: its ghost in γ̇ (empty: none)
+  std::vector<WallGhost> m_strain_rate_ghosts;  // per local cell: its ghost in γ̇ (empty: none)
   // Scratch, sized once: the fluid cells and the closures' inputs and outputs over them.
   std::vector<int> m_cells;
   std::vector<double> m_fraction, m_rate, m_pressure_rate, m_divergence, m_slip;

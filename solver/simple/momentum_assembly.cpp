@@ -97,10 +97,9 @@ void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d
   // numerics.shear_on_opening_faces = false: an edge with an opening's outside cell among its
   // four cells (c, n and their neighbours across the face) shears nothing, as MFIX's zero
   // viscosity in flow-boundary cells (SET_EPMUS_VALUES) makes its harmonic edge means.
-  const auto& regions = disc.domain().regions;
+  const auto& domain = disc.domain();
   auto opening = [&](int cell) {
-    if (cell < 0 || layout.kind(cell) != grid::CellKind::boundary || layout.region(cell) < 0) return false;
-    return grid::is_opening(regions.types[static_cast<std::size_t>(layout.region(cell))]);
+    return cell >= 0 && grid::is_opening_cell(domain.flags, domain.regions, layout.natural(cell));
   };
   auto unsheared_edge = [&](int c, int n, int face) {
     return !in.settings.shear_on_opening_faces &&

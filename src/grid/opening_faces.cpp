@@ -7,6 +7,12 @@ bool is_opening(BoundaryType type) {
          type == BoundaryType::mass_inflow;
 }
 
+bool is_opening_cell(const CellFlags& flags, const BoundaryRegions& regions, Natural n) {
+  const auto i = static_cast<std::size_t>(n);
+  const int r = flags.region[i];
+  return flags.kind[i] == CellKind::boundary && r >= 0 && is_opening(regions.types[static_cast<std::size_t>(r)]);
+}
+
 namespace {
 
 // The four corners of the face normal to d at coordinate `at`, spanning the fluid cell's extent
@@ -39,9 +45,7 @@ std::vector<OpeningFace> opening_faces(const StructuredGrid& grid, const CellFla
   std::vector<OpeningFace> out;
   const auto kind = [&](Natural n) { return flags.kind[static_cast<std::size_t>(n)]; };
   const auto opening_region = [&](Natural n) {
-    const int r = flags.region[static_cast<std::size_t>(n)];
-    return kind(n) == CellKind::boundary && r >= 0 && is_opening(regions.types[static_cast<std::size_t>(r)])
-               ? r : -1;
+    return is_opening_cell(flags, regions, n) ? flags.region[static_cast<std::size_t>(n)] : -1;
   };
   for (Natural c = 0; c < static_cast<Natural>(flags.kind.size()); ++c) {
     if (kind(c) == CellKind::excluded) continue;

@@ -24,6 +24,8 @@ struct OpeningFace {
 
 // Whether a boundary type lets a phase through: pressure inflow and outflow, mass inflow.
 bool is_opening(BoundaryType type);
+// Whether cell n (natural index) is a boundary cell of an opening's region.
+bool is_opening_cell(const CellFlags& flags, const BoundaryRegions& regions, Natural n);
 
 // Every opening face of the extended box, ordered by (owner, direction); the same on every rank
 // (it reads the global flags).

@@ -221,5 +221,32 @@ TEST(Closures, OutflowCellsTakeTheirNeighboursSolidsPressureUnlessZero) {
   }
 }
 
+// numerics.copy_velocity_into_openings reaches the closures' strain rate even with the walls'
+// shear left out of it (this column's wall_shear_in_strain_rate = false): under u_s = γ̇ z the
+// top layer below a pressure outflow takes the one-sided ∂u/∂z = γ̇ by default, and with the key
+// the outflow cell's copy of u_c a width away: γ̇ h/(h + w), h the distance to the layer below,
+// w the top layer's height (MFIX's SET_OUTFLOW).
+TEST(Closures, OutflowCellsCanHoldTheirNeighboursVelocityInTheStrainRate) {
+  for (const bool copy : {false, true}) {
+    Case c(column("plastic", std::string("copy_velocity_into_openings = ") + (copy ? "true" : "false") +
+                                 "\n[[boundary]]\nname = \"top\"\ntype = \"pressure_outflow\"\nface = \"z+\"\n"));
+    fill(c);
+    solver::Closures closures(c.deck, c.disc);
+    solver::ClosureFields fields(static_cast<std::size_t>(c.local_count()));
+    closures.evaluate(c.disc, c.state, c.old, 1e-3, fields);
+    int top_cells = 0;
+    for (int l = 0; l < c.owned_fluid(); ++l) {
+      if (c.layout().index3(l)[2] != 3) continue;
+      const int below = c.layout().neighbour(l, parallel::bottom);
+      const double w = c.disc.width(l, 2), h = 0.5 * (w + c.disc.width(below, 2));
+      const double gradient = copy ? shear * h / (h + w) : shear;
+      const double expected = std::sqrt(gradient * gradient + 2.0 * compression * compression);
+      EXPECT_NEAR(fields.strain_rate[static_cast<std::size_t>(l)], expected, 1e-9 * expected) << "copy " << copy;
+      ++top_cells;
+    }
+    EXPECT_GT(c.sum(top_cells), 0);
+  }
+}
+
 }  // namespace
 }  // namespace bagnold::tests

@@ -82,7 +82,7 @@ TEST(StrainRate, FlaggedNoSlipWallPutsItsShearIntoTheWallCells) {
   const double speed = 0.2, width = 0.01;
   const auto u = plug(domain, speed);
   const solver::Discretization discretization(domain);
-  const auto flagged = solver::wall_shear_cells(domain, std::vector<bool>(domain.regions.regions.size(), true), true);
+  const auto flagged = solver::strain_rate_ghosts(domain, std::vector<bool>(domain.regions.regions.size(), true), true);
   std::vector<double> with_wall, without_wall, divergence;
   solver::compute_strain_rate(discretization, u, with_wall, divergence, flagged);
   solver::compute_strain_rate(discretization, u, without_wall, divergence);
@@ -113,7 +113,7 @@ TEST(StrainRate, WallCellsBesideAnOpeningCanLeaveTheirShearOut) {
   std::vector<bool> walls(domain.regions.regions.size(), false);
   walls[static_cast<std::size_t>(domain.regions.default_region())] = true;  // the no-slip walls
   for (const bool beside_openings : {true, false}) {
-    const auto flagged = solver::wall_shear_cells(domain, walls, beside_openings);
+    const auto flagged = solver::strain_rate_ghosts(domain, walls, beside_openings);
     std::vector<double> gamma_dot, divergence;
     solver::compute_strain_rate(discretization, u, gamma_dot, divergence, flagged);
     for (int l = 0; l < domain.layout.owned_fluid_count(); ++l) {
@@ -148,7 +148,7 @@ TEST(StrainRate, WallCellsBesideAnOpeningHoldAFreeSlipGhost) {
   walls[static_cast<std::size_t>(domain.regions.default_region())] = true;
   for (const bool beside_openings : {true, false})
     for (const bool copy : {false, true}) {
-      const auto ghosts = solver::wall_shear_cells(domain, walls, beside_openings, copy);
+      const auto ghosts = solver::strain_rate_ghosts(domain, walls, beside_openings, copy);
       std::vector<double> gamma_dot, divergence;
       solver::compute_strain_rate(discretization, u, gamma_dot, divergence, ghosts);
       for (int l = 0; l < domain.layout.owned_fluid_count(); ++l) {

@@ -197,16 +197,24 @@ TEST(Closures, RelaxedPressureShearRateIsImplicitEuler) {
   EXPECT_GT(checked, 0);
 }
 
+// The column's top as a pressure outflow (a [[boundary]] table to append).
+const std::string top_outflow = "[[boundary]]\nname = \"top\"\ntype = \"pressure_outflow\"\nface = \"z+\"\n";
+
+// Deck c's closures evaluated once at its state (dt = 1 ms).
+solver::ClosureFields evaluated(Case& c) {
+  solver::Closures closures(c.deck, c.disc);
+  solver::ClosureFields fields(static_cast<std::size_t>(c.local_count()));
+  closures.evaluate(c.disc, c.state, c.old, 1e-3, fields);
+  return fields;
+}
+
 // An outflow cell of a pressure_outflow region holds its fluid neighbour's P_s with
 // solids_pressure = "zero-gradient" (MFIX's set_outflow) and 0 with "zero" (the default).
 TEST(Closures, OutflowCellsTakeTheirNeighboursSolidsPressureUnlessZero) {
   for (const std::string treatment : {"zero-gradient", "zero"}) {
-    Case c(column("steady-shear", "[[boundary]]\nname = \"top\"\ntype = \"pressure_outflow\"\nface = \"z+\"\n"
-                                  "solids_pressure = \"" + treatment + "\"\n"));
+    Case c(column("steady-shear", top_outflow + "solids_pressure = \"" + treatment + "\"\n"));
     fill(c);
-    solver::Closures closures(c.deck, c.disc);
-    solver::ClosureFields fields(static_cast<std::size_t>(c.local_count()));
-    closures.evaluate(c.disc, c.state, c.old, 1e-3, fields);
+    evaluated(c);  // the state's P_s
     int outflow_cells = 0;
     for (int l = 0; l < c.local_count(); ++l) {
       if (c.layout().kind(l) != grid::CellKind::boundary || c.layout().index3(l)[2] != 4) continue;
@@ -228,12 +236,10 @@ TEST(Closures, OutflowCellsTakeTheirNeighboursSolidsPressureUnlessZero) {
 // w the top layer's height (MFIX's SET_OUTFLOW).
 TEST(Closures, OutflowCellsCanHoldTheirNeighboursVelocityInTheStrainRate) {
   for (const bool copy : {false, true}) {
-    Case c(column("plastic", std::string("copy_velocity_into_openings = ") + (copy ? "true" : "false") +
-                                 "\n[[boundary]]\nname = \"top\"\ntype = \"pressure_outflow\"\nface = \"z+\"\n"));
+    Case c(column("plastic", std::string("copy_velocity_into_openings = ") + (copy ? "true" : "false") + "\n" +
+                                 top_outflow));
     fill(c);
-    solver::Closures closures(c.deck, c.disc);
-    solver::ClosureFields fields(static_cast<std::size_t>(c.local_count()));
-    closures.evaluate(c.disc, c.state, c.old, 1e-3, fields);
+    const auto fields = evaluated(c);
     int top_cells = 0;
     for (int l = 0; l < c.owned_fluid(); ++l) {
       if (c.layout().index3(l)[2] != 3) continue;

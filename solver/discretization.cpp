@@ -1,6 +1,8 @@
 // The per-rank discretization (discretization.hpp): widths, face classes, numberings.
 #include "solver/discretization.hpp"
 
+#include "src/grid/opening_faces.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -10,6 +12,9 @@ Discretization::Discretization(const parallel::Domain& domain) : m_domain(domain
   const auto& layout = domain.layout;
   const auto local = static_cast<std::size_t>(layout.local_count());
   m_width.resize(3 * local);
+  m_opening.resize(local);
+  for (std::size_t l = 0; l < local; ++l)
+    m_opening[l] = grid::is_opening_cell(domain.flags, domain.regions, layout.natural(static_cast<int>(l))) ? 1 : 0;
   for (std::size_t l = 0; l < local; ++l) {
     const auto ijk = layout.index3(static_cast<int>(l));
     for (int d = 0; d < 3; ++d)

@@ -39,6 +39,9 @@ class Discretization {
   // Area of the cell's face normal to d.
   double face_area(int local, int d) const { return width(local, (d + 1) % 3) * width(local, (d + 2) % 3); }
   double volume(int local) const { return width(local, 0) * width(local, 1) * width(local, 2); }
+  // Whether local cell `local` (or -1: none) is a boundary cell of an opening (pressure outflow
+  // or inflow, mass inflow; grid::is_opening_cell).
+  bool opening(int local) const { return local >= 0 && m_opening[static_cast<std::size_t>(local)] != 0; }
 
   // The gas's or the solids' velocity faces (they differ only in what a mass inflow brings).
   const VelocityFaces& faces(Phase phase) const { return *m_faces[static_cast<std::size_t>(phase)]; }
@@ -60,6 +63,7 @@ class Discretization {
 
  private:
   const parallel::Domain& m_domain;
+  std::vector<char> m_opening;  // per local cell: an opening's boundary cell
   std::vector<double> m_width;  // 3 per local cell
   std::array<std::unique_ptr<VelocityFaces>, 2> m_faces;
   std::array<std::unique_ptr<UnknownNumbering>, 3> m_velocity_numbering;

@@ -48,7 +48,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "src/grid/opening_faces.hpp"
 #include "solver/simple/face_fractions.hpp"
 #include "solver/simple/momentum_rows.hpp"
 #include "solver/strain_rate.hpp"
@@ -97,14 +96,10 @@ void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d
   // numerics.shear_on_opening_faces = false: an edge with an opening's outside cell among its
   // four cells (c, n and their neighbours across the face) shears nothing, as MFIX's zero
   // viscosity in flow-boundary cells (SET_EPMUS_VALUES) makes its harmonic edge means.
-  const auto& domain = disc.domain();
-  auto opening = [&](int cell) {
-    return cell >= 0 && grid::is_opening_cell(domain.flags, domain.regions, layout.natural(cell));
-  };
   auto unsheared_edge = [&](int c, int n, int face) {
     return !in.settings.shear_on_opening_faces &&
-           (opening(c) || opening(n) || opening(layout.neighbour(c, face)) ||
-            (n >= 0 && opening(layout.neighbour(n, face))));
+           (disc.opening(c) || disc.opening(n) || disc.opening(layout.neighbour(c, face)) ||
+            (n >= 0 && disc.opening(layout.neighbour(n, face))));
   };
   // Newton: the implicit part of each face's viscous coefficient is the tangent's, μ_s f_de
   // (ClosureFields::tangent_factor); the rest, (D − D_t)(u_nb − u_P), acts on the iterate.

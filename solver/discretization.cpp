@@ -13,9 +13,8 @@ Discretization::Discretization(const parallel::Domain& domain) : m_domain(domain
   const auto local = static_cast<std::size_t>(layout.local_count());
   m_width.resize(3 * local);
   m_opening.resize(local);
-  for (std::size_t l = 0; l < local; ++l)
-    m_opening[l] = grid::is_opening_cell(domain.flags, domain.regions, layout.natural(static_cast<int>(l))) ? 1 : 0;
   for (std::size_t l = 0; l < local; ++l) {
+    m_opening[l] = grid::is_opening_cell(domain.flags, domain.regions, layout.natural(static_cast<int>(l))) ? 1 : 0;
     const auto ijk = layout.index3(static_cast<int>(l));
     for (int d = 0; d < 3; ++d)
       m_width[3 * l + static_cast<std::size_t>(d)] = domain.grid.axis(d).width(ijk[static_cast<std::size_t>(d)]);

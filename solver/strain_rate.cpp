@@ -90,9 +90,7 @@ std::vector<WallGhost> strain_rate_ghosts(const parallel::Domain& domain,
     if (layout.kind(l) != CellKind::boundary) continue;
     const int region = layout.region(l);
     if (region < 0) continue;
-    const auto type = domain.regions.types[static_cast<std::size_t>(region)];
-    if (copy_into_openings && (type == grid::BoundaryType::pressure_outflow ||
-                               type == grid::BoundaryType::pressure_inflow)) {
+    if (copy_into_openings && grid::is_pressure_opening(domain.regions.types[static_cast<std::size_t>(region)])) {
       flagged[static_cast<std::size_t>(l)] = WallGhost::mirror;
       continue;
     }

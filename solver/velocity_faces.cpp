@@ -1,14 +1,12 @@
 #include "solver/velocity_faces.hpp"
 
+#include "src/grid/opening_faces.hpp"
+
 namespace bagnold::solver {
 
 namespace {
 using grid::BoundaryType;
 using grid::CellKind;
-
-bool is_pressure(BoundaryType t) {
-  return t == BoundaryType::pressure_outflow || t == BoundaryType::pressure_inflow;
-}
 
 struct Classifier {
   const parallel::Domain& domain;
@@ -44,7 +42,7 @@ struct Classifier {
   }
   std::pair<FaceClass, double> open_or_fixed(grid::Natural boundary, int d) const {
     const BoundaryType t = type_at(boundary);
-    if (is_pressure(t)) return {FaceClass::unknown, 0.0};
+    if (grid::is_pressure_opening(t)) return {FaceClass::unknown, 0.0};
     const auto& r = region_at(boundary);
     if (t == BoundaryType::mass_inflow) return {FaceClass::fixed, inflow_velocity(r)[static_cast<std::size_t>(d)]};
     if (t == BoundaryType::moving_wall) return {FaceClass::fixed, r.wall_velocity[static_cast<std::size_t>(d)]};
@@ -130,13 +128,13 @@ VelocityFaces::VelocityFaces(const parallel::Domain& domain, bool solids_phase) 
   for (std::size_t l = 0; l < local; ++l) {
     if (layout.kind(static_cast<int>(l)) != CellKind::boundary) continue;
     const auto t = domain.regions.types[static_cast<std::size_t>(layout.region(static_cast<int>(l)))];
-    if (is_pressure(t)) {
+    if (grid::is_pressure_opening(t)) {
       pressure_boundary[l] = 1;
       boundary_pressure[l] = domain.regions.regions[static_cast<std::size_t>(layout.region(static_cast<int>(l)))].pressure;
     }
   }
   for (std::size_t r = 0; r < domain.regions.types.size(); ++r)
-    has_pressure_boundary = has_pressure_boundary || (is_pressure(domain.regions.types[r]) &&
+    has_pressure_boundary = has_pressure_boundary || (grid::is_pressure_opening(domain.regions.types[r]) &&
                                                       domain.flags.boundary_count > 0);
 }
 

@@ -7,6 +7,10 @@ bool is_opening(BoundaryType type) {
          type == BoundaryType::mass_inflow;
 }
 
+bool is_pressure_opening(BoundaryType type) {
+  return type == BoundaryType::pressure_outflow || type == BoundaryType::pressure_inflow;
+}
+
 bool is_opening_cell(const CellFlags& flags, const BoundaryRegions& regions, Natural n) {
   const auto i = static_cast<std::size_t>(n);
   const int r = flags.region[i];

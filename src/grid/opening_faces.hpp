@@ -24,6 +24,8 @@ struct OpeningFace {
 
 // Whether a boundary type lets a phase through: pressure inflow and outflow, mass inflow.
 bool is_opening(BoundaryType type);
+// Whether a boundary type holds a given pressure: pressure inflow and outflow.
+bool is_pressure_opening(BoundaryType type);
 // Whether cell n (natural index) is a boundary cell of an opening's region.
 bool is_opening_cell(const CellFlags& flags, const BoundaryRegions& regions, Natural n);
 

@@ -96,22 +96,38 @@ TEST(StrainRate, FlaggedNoSlipWallPutsItsShearIntoTheWallCells) {
   }
 }
 
+// A 4 × 3 × 4 box of 1 cm cells whose floor has a pressure outflow under its first column
+// (x < 1 cm), every other boundary the no-slip default walls, flagged for γ̇ in `walls`.
+struct OrificeFloor {
+  OrificeFloor()
+      : deck(deck::load_deck_text(
+            box_deck(4, 3, 4,
+                     "[[boundary]]\nname = \"orifice\"\ntype = \"pressure_outflow\"\nface = \"z-\"\n"
+                     "min = [0.0, 0.0, -1.0]\nmax = [0.01, 0.03, 0.0]\npressure = 101325.0\n"),
+            "strain.toml", {})),
+        domain(deck, parallel::Communicator()),
+        discretization(domain),
+        walls(domain.regions.regions.size(), false) {
+    walls[static_cast<std::size_t>(domain.regions.default_region())] = true;
+  }
+  deck::Deck deck;
+  parallel::Domain domain;
+  solver::Discretization discretization;
+  std::vector<bool> walls;
+};
+
 // numerics.wall_shear_beside_openings = false (MFIX's SET_FLAGS): a floor with a pressure outflow
 // under its first column (x < 1 cm). A plug u_x = U: the floor cells under x in [1, 2) cm touch
 // the outflow cell beside them and put no shear into γ̇ of the fluid cells above; the floor
 // under x ≥ 2 cm does, as before; above the outflow there is no wall at all. With the default
 // (true) the floor under [1, 2) cm is a wall like the rest.
 TEST(StrainRate, WallCellsBesideAnOpeningCanLeaveTheirShearOut) {
-  const std::string outlet =
-      "[[boundary]]\nname = \"orifice\"\ntype = \"pressure_outflow\"\nface = \"z-\"\n"
-      "min = [0.0, 0.0, -1.0]\nmax = [0.01, 0.03, 0.0]\npressure = 101325.0\n";
-  const auto deck = deck::load_deck_text(box_deck(4, 3, 4, outlet), "strain.toml", {});
-  const parallel::Domain domain(deck, parallel::Communicator());
+  const OrificeFloor box;
+  const auto& domain = box.domain;
   const double speed = 0.2, width = 0.01;
   const auto u = plug(domain, speed);
-  const solver::Discretization discretization(domain);
-  std::vector<bool> walls(domain.regions.regions.size(), false);
-  walls[static_cast<std::size_t>(domain.regions.default_region())] = true;  // the no-slip walls
+  const auto& discretization = box.discretization;
+  const auto& walls = box.walls;
   for (const bool beside_openings : {true, false}) {
     const auto flagged = solver::strain_rate_ghosts(domain, walls, beside_openings);
     std::vector<double> gamma_dot, divergence;
@@ -135,17 +151,13 @@ TEST(StrainRate, WallCellsBesideAnOpeningCanLeaveTheirShearOut) {
 // ghost (+u_c a width away): G/2 in the fluid cell above it, half the one-sided G; with
 // copy_velocity_into_openings the outflow cell holds the same (MFIX's SET_OUTFLOW): G/2 above it.
 TEST(StrainRate, WallCellsBesideAnOpeningHoldAFreeSlipGhost) {
-  const std::string outlet =
-      "[[boundary]]\nname = \"orifice\"\ntype = \"pressure_outflow\"\nface = \"z-\"\n"
-      "min = [0.0, 0.0, -1.0]\nmax = [0.01, 0.03, 0.0]\npressure = 101325.0\n";
-  const auto deck = deck::load_deck_text(box_deck(4, 3, 4, outlet), "strain.toml", {});
-  const parallel::Domain domain(deck, parallel::Communicator());
+  const OrificeFloor box;
+  const auto& domain = box.domain;
   const double shear = 3.0;
   const double a[3][3] = {{0, 0, shear}, {0, 0, 0}, {0, 0, 0}};
   const auto u = linear_field(domain, a);
-  const solver::Discretization discretization(domain);
-  std::vector<bool> walls(domain.regions.regions.size(), false);
-  walls[static_cast<std::size_t>(domain.regions.default_region())] = true;
+  const auto& discretization = box.discretization;
+  const auto& walls = box.walls;
   for (const bool beside_openings : {true, false})
     for (const bool copy : {false, true}) {
       const auto ghosts = solver::strain_rate_ghosts(domain, walls, beside_openings, copy);

@@ -87,6 +87,7 @@ StepResult FlowSolver::advance(run::FlowState& state, const run::FlowState& old,
     const auto& [energy_imbalance, energy_scale] = sums.energy;
     result.residuals.value[granular_energy] =
         !m_energy || energy_imbalance <= 1e-300 ? 0.0 : energy_imbalance / std::max(energy_scale, 1e-300);
+    result.wall_shear = sums.wall_shear;
     for (int i = 0; i < intervention_count; ++i)
       result.interventions[static_cast<std::size_t>(i)] += sums.interventions[static_cast<std::size_t>(i)];
     const double largest = result.residuals.largest();

@@ -44,7 +44,9 @@
 // on the control volume (the weight ε_m ρ_m |g| V, also kept as row.weight, the pressure and P_s
 // forces, the boundary stress a_nb |u_b − u_P| of walls and given velocities, the source, and
 // the floor ε_m ρ_m a_min V), which the "force" residual normalization measures against, with
-// the drag added by the predictor (momentum_residual.hpp).
+// the drag added by the predictor (momentum_residual.hpp). row.wall_shear is the walls' own
+// tangential force on it, D (u_wall − u_P) summed over its faces along a wall (no slip, or a
+// partial-slip law's c_w A), which the monitor sums (wall_shear_* columns).
 #include <algorithm>
 #include <cmath>
 
@@ -242,6 +244,7 @@ void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d
           row.b += a_nb * value;
           if (newton) row.b += (diffusion - tangent) * (value - at(l));
           row.force += (diffusion + convective) * std::abs(value - at(l));  // the whole wall stress
+          if (link.kind == LinkKind::wall && e != d) row.wall_shear += diffusion * (value - at(l));
           break;
         }
         case LinkKind::zero_gradient:

@@ -117,6 +117,8 @@ bool MomentumPredictor::predict(int d, const Inputs& in, run::FlowState& state,
     const MomentumRow* g = moves[gas] ? &rows[gas][r] : nullptr;
     const MomentumRow* s = moves[solids] && rows[solids][r].active ? &rows[solids][r] : nullptr;
     const MomentumRow& any = g ? *g : rows[solids][r];
+    if (g) sums.wall_shear[gas][ud] += g->wall_shear;
+    if (s) sums.wall_shear[solids][ud] += s->wall_shear;
     const double half_c = 0.5 * disc.width(l, d), half_n = 0.5 * disc.width(n, d);
     const double beta = (beta_cells[ul] * half_n + beta_cells[static_cast<std::size_t>(n)] * half_c) / (half_c + half_n);
     const double beta_v = settings.drag ? beta * any.volume : 0.0;

@@ -56,8 +56,8 @@ std::string CellLocation::text() const {
 
 void IterationSums::reduce(const parallel::Communicator& comm) {
   // One contiguous buffer, one Allreduce: 6 × 4 momentum sums, 2 × 2 continuity sums, 2 energy
-  // sums, counters.
-  constexpr std::size_t count = 6 * MomentumResidual::Sums::size + 4 + 2 + intervention_count + 1;
+  // sums, counters, 2 × 3 wall forces.
+  constexpr std::size_t count = 6 * MomentumResidual::Sums::size + 4 + 2 + intervention_count + 6 + 1;
   std::array<double, count> buffer{};
   std::size_t k = 0;
   for (auto& m : momentum)
@@ -66,6 +66,8 @@ void IterationSums::reduce(const parallel::Communicator& comm) {
     for (double& v : c) buffer[k++] = v;
   for (double& v : energy) buffer[k++] = v;
   for (double& v : interventions) buffer[k++] = v;
+  for (auto& w : wall_shear)
+    for (double& v : w) buffer[k++] = v;
   buffer[k++] = stop;
   comm.sum_in_place(buffer.data(), count);
   k = 0;
@@ -75,6 +77,8 @@ void IterationSums::reduce(const parallel::Communicator& comm) {
     for (double& v : c) v = buffer[k++];
   for (double& v : energy) v = buffer[k++];
   for (double& v : interventions) v = buffer[k++];
+  for (auto& w : wall_shear)
+    for (double& v : w) v = buffer[k++];
   stop = buffer[k++];
 }
 

@@ -59,6 +59,7 @@ struct IterationSums {
   std::array<std::array<double, 2>, 2> continuity{};     // mixture, solids: {Σ|R|, Σ ½|Q|}
   std::array<double, 2> energy{};                        // granular energy: {Σ|R|, its scale}
   std::array<double, intervention_count> interventions{};
+  std::array<std::array<double, 3>, 2> wall_shear{};    // the walls' tangential force [N], per phase and d
   double stop = 0.0;  // > 0 on a rank asked to stop (a signal): every rank learns it in reduce()
   void reduce(const parallel::Communicator& comm);
 };
@@ -135,6 +136,9 @@ struct StepResult {
   // Summed over the step's outer iterations and all ranks.
   std::array<double, intervention_count> interventions{};
   std::array<double, linear_system_count> linear_iterations{};
+  // The tangential force the walls exert on each phase [N] (gas, solids; x, y, z), from the last
+  // outer iteration's momentum rows, summed over all ranks.
+  std::array<std::array<double, 3>, 2> wall_shear{};
   std::string failure;  // why the step stopped early (a linear solve that failed), else empty
   bool abandoned = false;  // stopped on request (a signal) between two outer iterations
 };

@@ -23,6 +23,8 @@ run::RankCounters rank_counters(const parallel::Domain& domain, const run::FlowS
 
 std::vector<std::string> monitor_columns(const deck::Deck& deck, const parallel::Domain& domain) {
   auto columns = run::monitor_columns(domain.regions, deck.pressure_probes);
+  for (const char* phase : {"gas", "solids"})
+    for (const char* d : {"x", "y", "z"}) columns.push_back(std::string("wall_shear_") + phase + "_" + d + "_N");
   for (int i = 0; i < solver::intervention_count; ++i) columns.push_back(solver::intervention_name(i));
   for (int k = 0; k < solver::linear_system_count; ++k) columns.push_back(solver::linear_system_name(k));
   columns.push_back("courant");
@@ -43,6 +45,7 @@ std::vector<double> monitor_row(const TimeLoopContext& context, const FlowSolver
   }
   const auto drops = run::pressure_drops(context.deck, context.domain, state);  // collective
   row.insert(row.end(), drops.begin(), drops.end());
+  for (const auto& phase : step.wall_shear) row.insert(row.end(), phase.begin(), phase.end());
   row.insert(row.end(), step.interventions.begin(), step.interventions.end());
   row.insert(row.end(), step.linear_iterations.begin(), step.linear_iterations.end());
   row.push_back(courant);

@@ -35,7 +35,12 @@ DECK = ("[physics]\ngravity = [0.0, 0.0, -9.81]\n[gas]\ndensity = 1.2\n[solids]\
         "[[pressure_probe]]\nname = \"bed\"\nlower = [0.0, 0.005, 0.005]\nupper = [0.0, 0.005, 0.995]\n")
 
 
-def write_snapshots(run_dir):
+# The balance run's snapshots also carry a uniform solids velocity RISE × t and a P_s falling
+# linearly from PS_FLOOR in the first layer to 0 in layer 10; its monitor the walls' shear.
+RISE, PS_FLOOR, WALL_SOLIDS, WALL_GAS = 0.04, 30.0, 0.05, 0.002  # m/s², Pa, N, N
+
+
+def write_snapshots(run_dir, balance=False):
     os.makedirs(run_dir, exist_ok=True)
     for step, time in enumerate(TIMES):
         phi = np.zeros((NZ, 1, NX))
@@ -53,9 +58,14 @@ def write_snapshots(run_dir):
             f["grid/cell_flags"] = np.ones((NZ, 1, NX), dtype=np.uint8)
             f["fields/solids_fraction"] = phi
             f["fields/gas_fraction"] = 1.0 - phi
+            if balance:
+                f["fields/solids_velocity_z"] = np.full(phi.shape, RISE * time)
+                f["fields/gas_velocity_z"] = np.zeros(phi.shape)
+                layers = np.clip(PS_FLOOR * (1.0 - np.arange(NZ) / 10.0), 0.0, None)
+                f["fields/solids_pressure"] = np.broadcast_to(layers[:, None, None], phi.shape).copy()
 
 
-def write_monitor(run_dir, probes=("bed",)):
+def write_monitor(run_dir, probes=("bed",), wall_shear=False):
     rng = np.random.default_rng(3)
     dts = rng.uniform(0.8e-3, 1.2e-3, 2600)
     t = np.cumsum(dts)
@@ -63,10 +73,13 @@ def write_monitor(run_dir, probes=("bed",)):
     t, dts = t[keep], dts[keep]
     dp = WEIGHT * (1.0 + 0.02 * np.sin(2 * np.pi * FREQUENCY * t))
     names = ["time", "dt", "inventory_solids_kg"] + [f"dp_{p}" for p in probes]
+    walls = [WALL_GAS, WALL_SOLIDS] if wall_shear else []
+    if wall_shear:
+        names += ["wall_shear_gas_z_N", "wall_shear_solids_z_N"]
     with open(os.path.join(run_dir, "monitor.csv"), "w") as f:
         f.write(",".join(names) + "\n")
         for i in range(len(t)):
-            f.write(",".join(f"{v:.17g}" for v in [t[i], dts[i], SOLIDS_KG] + [dp[i]] * len(probes)) + "\n")
+            f.write(",".join(f"{v:.17g}" for v in [t[i], dts[i], SOLIDS_KG] + [dp[i]] * len(probes) + walls) + "\n")
     return t, dts, dp
 
 
@@ -126,6 +139,31 @@ class BedStatistics(unittest.TestCase):
         self.assertLessEqual(abs(values["dominant_frequency_Hz"] - FREQUENCY), 1.0 / 1.5)
         darton = 0.54 * 0.19 ** 0.4 * 0.25 ** 0.8 / G ** 0.2
         self.assertIn(f"D = {darton:.4g} m", out)
+
+    def test_momentum_balance(self):
+        # Without the walls' shear in monitor.csv there is no balance.
+        values, _ = self.statistics()
+        self.assertTrue(np.isnan(values["momentum_balance_residual"]))
+        run_dir = os.path.join(self.tmp, "balance")
+        write_snapshots(run_dir, balance=True)
+        write_monitor(run_dir, wall_shear=True)
+        values, out = self.statistics(run_dir=run_dir)
+        area = 0.2 * 0.01
+        self.assertAlmostEqual(values["wall_support_Pa"], (WALL_SOLIDS + WALL_GAS) / area, places=4)
+        # P_s at 5 mm (the first layer's centre) less that at 995 mm.
+        self.assertAlmostEqual(values["solids_pressure_difference_Pa"], PS_FLOOR, places=4)
+        # The solids' z-momentum at 2 s less that at 0.5 s (the window's snapshots), over 1.5 s.
+        def solids_kg(t):
+            top = SURFACE[t] * 0.01
+            per_width = PHI * top * 0.2 - 0.06 * 0.06 * PHI - 0.02 * 0.02 * (PHI - 0.05) \
+                - 0.02 * 0.01 * (PHI - 0.05)
+            return RHO_S * per_width * 0.01
+        change = (solids_kg(2.0) * RISE * 2.0 - solids_kg(0.5) * RISE * 0.5) / 1.5 / area
+        self.assertLess(abs(values["momentum_change_Pa"] / change - 1.0), 1e-5)
+        expected = (values["mean_pressure_drop_Pa"] + PS_FLOOR + (WALL_SOLIDS + WALL_GAS) / area - change
+                    - values["weight_between_probe_ends_Pa"]) / values["weight_between_probe_ends_Pa"]
+        self.assertAlmostEqual(values["momentum_balance_residual"], expected, places=5)
+        self.assertIn("momentum balance between the probe's ends", out)
 
     def test_window_and_thresholds(self):
         values, _ = self.statistics("--start", "1.0", "--end", "1.5")

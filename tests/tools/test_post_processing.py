@@ -288,5 +288,31 @@ class PostProcessing(unittest.TestCase):
         self.assertFalse(os.path.exists(out))
 
 
+class CompareMonitors(unittest.TestCase):
+    """tools/compare-monitors: each column against its largest |value|, a vector's components
+    against the vector's."""
+
+    def write(self, folder, rows):
+        os.makedirs(folder, exist_ok=True)
+        with open(os.path.join(folder, "monitor.csv"), "w") as f:
+            f.write("time,dt,wall_shear_solids_x_N,wall_shear_solids_y_N,wall_shear_solids_z_N\n")
+            for row in rows:
+                f.write(",".join(f"{v:.17g}" for v in row) + "\n")
+
+    def test_round_off_in_a_vector_component(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            a, b, c = (os.path.join(tmp, n) for n in "abc")
+            self.write(a, [[0.1, 0.1, 2.0, 1e-16, -30.0], [0.2, 0.1, 2.5, -2e-16, -31.0]])
+            # y is zero but for round-off in both: its difference is measured against |z|.
+            self.write(b, [[0.1, 0.1, 2.0, -3e-16, -30.0], [0.2, 0.1, 2.5, 1e-16, -31.0]])
+            code, out, _ = run("compare-monitors", a, b, "--tolerance", "1e-9")
+            self.assertEqual(code, 0, out)
+            # A difference of 1e-3 of the vector in one component fails.
+            self.write(c, [[0.1, 0.1, 2.0, 0.031, -30.0], [0.2, 0.1, 2.5, 0.0, -31.0]])
+            code, out, _ = run("compare-monitors", a, c, "--tolerance", "1e-4")
+            self.assertEqual(code, 1, out)
+            self.assertIn("FAIL", out)
+
+
 if __name__ == "__main__":
     unittest.main(verbosity=2)

@@ -102,10 +102,11 @@ void LinearSystem::create_ksp() {
   petsc_check(KSPSetFromOptions(m_ksp.get()), "KSPSetFromOptions");
 }
 
-void LinearSystem::reuse_preconditioner(bool reuse) {
-  petsc_check(KSPSetReusePreconditioner(m_ksp.get(), reuse ? PETSC_TRUE : PETSC_FALSE),
-              "KSPSetReusePreconditioner");
+void LinearSystem::keep_preconditioner() {
+  petsc_check(KSPSetReusePreconditioner(m_ksp.get(), PETSC_TRUE), "KSPSetReusePreconditioner");
 }
+
+void LinearSystem::renew_preconditioner() { create_ksp(); }
 
 SolveReport LinearSystem::solve(std::vector<double>& x) {
   petsc_check(MatSetValuesCOO(m_matrix.get(), m_values.data(), INSERT_VALUES), "MatSetValuesCOO");

@@ -50,7 +50,11 @@ class LinearSystem {
                double rhs);
   // Keep the preconditioner built for an earlier matrix (e.g. within one time step, where the
   // pressure matrix changes little between outer iterations) instead of rebuilding it.
-  void reuse_preconditioner(bool reuse);
+  void keep_preconditioner();
+  // A fresh KSP and preconditioner: the next solve builds its preconditioner from nothing, as the
+  // first solve of a restarted run does. (GAMG carries state from one set-up of a KSP to the
+  // next, so rebuilding it in place would make a continued run differ from a restarted one.)
+  void renew_preconditioner();
   // Solves with `x` (owned entries, in row order) as the initial guess; x is overwritten.
   SolveReport solve(std::vector<double>& x);
   // Rows in the last solve's Krylov system on this rank (all owned rows unless

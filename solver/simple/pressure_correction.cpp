@@ -34,7 +34,7 @@ PressureCorrection::PressureCorrection(const deck::Deck& deck, const Discretizat
   m_correction.resize(static_cast<std::size_t>(discretization.layout().local_count()));
 }
 
-void PressureCorrection::start_step() { m_system->reuse_preconditioner(false); }
+void PressureCorrection::start_step() { m_system->renew_preconditioner(); }
 
 bool PressureCorrection::correct(const CorrectionResponse& response, const CarriedFractions& carried,
                                  run::FlowState& state, IterationSums& sums, WorstCells& worst,
@@ -79,7 +79,7 @@ bool PressureCorrection::correct(const CorrectionResponse& response, const Carri
   const SolveReport report = m_system->solve(m_x);
   // The multigrid hierarchy is built on the step's first outer iteration and reused by the later
   // ones (the matrix changes only through d); rebuilding it dominated the run time.
-  m_system->reuse_preconditioner(true);
+  m_system->keep_preconditioner();
   record.linear_iterations[pressure_system] += report.iterations;
   std::fill(m_correction.begin(), m_correction.end(), 0.0);
   for (std::size_t row = 0; row < numbering.owned_locals.size(); ++row)

@@ -413,8 +413,10 @@ const Section<Numerics>& numerics_section() {
           .doc("Under-relaxation of the pressure correction, α_p."),
       key(&Numerics::pressure_preconditioner, "pressure_preconditioner").init()
           .one_of({"hypre", "gamg"})
-          .doc("Algebraic multigrid for the pressure correction: hypre BoomerAMG (restarts "
-               "bit-exactly) or PETSc GAMG (restarts to ~1e-11: its setup carries state)."),
+          .doc("Algebraic multigrid for the pressure correction: hypre BoomerAMG or PETSc GAMG, "
+               "built afresh at each time step (so either restarts bit-exactly) and kept over "
+               "the step's outer iterations. Either converges to the same answer; which costs "
+               "less depends on the case (docs/benchmarks.md, \"The pressure preconditioner\")."),
       key(&Numerics::pressure_tolerance, "pressure_tolerance").unit("-").init()
           .within(1e-14, 0.5).doc("Relative tolerance of the pressure-correction solve."),
       key(&Numerics::momentum_tolerance, "momentum_tolerance").unit("-").init()

@@ -209,6 +209,16 @@ TEST(MfixImport, DetectStallIsCarriedOverWithMfixsDefaultOn) {
   EXPECT_TRUE(contains(malformed.deck, "detect_stall = true   # MFIX detect_stall (MFIX's default .T.)"));
 }
 
+TEST(MfixImport, ThreeDimensionalDecksTakeGamgForThePressure) {
+  // A numerics choice measured on MFIX's 3-D bin decks (docs/benchmarks.md); 2-D decks keep the
+  // default hypre.
+  const std::string gamg = "pressure_preconditioner = \"gamg\"";
+  EXPECT_TRUE(contains(import_text(box_deck("")).deck, gamg));
+  std::string flat = box_deck("no_k = .T.\n");
+  flat.replace(flat.find("kmax = 2"), 8, "");
+  EXPECT_FALSE(contains(import_text(flat).deck, gamg));
+}
+
 TEST(MfixImport, LenientWritesTheUnsupportedAsComments) {
   const auto result = import_text(box_deck("nscalar = 2\n"), true);
   ASSERT_EQ(result.unsupported.size(), 1u);

@@ -112,8 +112,9 @@ TEST(FlowSolver, AFailedLinearSolveFailsTheStepWithItsReason) {
                           "wall_velocity = [1.0, 0.0, 0.0]\n";
   petsc_check(PetscOptionsSetValue(nullptr, "-pressure_ksp_max_it", "1"), "PetscOptionsSetValue");
   Stepper r(unit_deck(4, 1, 4, "\"y\"", 0.0, gas_only() + lid + "[numerics]\npressure_tolerance = 1e-14\n"));
-  petsc_check(PetscOptionsClearValue(nullptr, "-pressure_ksp_max_it"), "PetscOptionsClearValue");
+  // Each step's pressure KSP reads the options when the step starts: cleared after this one.
   const auto result = r.flow.advance(r.c.state, r.c.old, 1e-2);
+  petsc_check(PetscOptionsClearValue(nullptr, "-pressure_ksp_max_it"), "PetscOptionsClearValue");
   EXPECT_FALSE(result.converged);
   EXPECT_FALSE(result.failure.empty());
   EXPECT_NE(result.failure.find("pressure"), std::string::npos) << result.failure;

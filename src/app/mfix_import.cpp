@@ -655,8 +655,9 @@ void Translator::numerics_and_output() {
   out_ << "shear_on_opening_faces = false   # as MFIX's zero viscosity in flow cells (docs/import-mfix.md)\n";
   // MFIX's SET_OUTFLOW copies the fluid cell's tangential velocities into a PO or PI cell.
   out_ << "copy_velocity_into_openings = true   # as MFIX's SET_OUTFLOW (docs/import-mfix.md)\n";
-  // A numerics choice, not MFIX's: on MFIX's 3-D bin decks GAMG takes 0.92 of hypre's CPU time
-  // for the same rate (docs/benchmarks.md, "The pressure preconditioner"); 2-D decks keep hypre.
+  // A numerics choice, not MFIX's, measured on MFIX's 3-D bin decks: GAMG takes 0.93 (5 mm) and
+  // 0.76 (10 mm) of hypre's CPU time for the same rate, and about the same on a 3-D bubbling bed
+  // (docs/benchmarks.md, "The pressure preconditioner"); 2-D decks keep hypre.
   if (!domain_.two_d)
     out_ << "pressure_preconditioner = \"gamg\"   # faster on MFIX's 3-D bin decks (docs/benchmarks.md)\n";
   // MFIX discretize(n): 0 first-order upwind (the default), 2 Superbee, 6 MUSCL, 7 van Leer,

@@ -110,11 +110,18 @@ TEST(FlowSolver, AFailedLinearSolveFailsTheStepWithItsReason) {
   // relative tolerance of 1e-14 cannot give it.
   const std::string lid = "[[boundary]]\nname = \"lid\"\ntype = \"moving_wall\"\nface = \"z+\"\n"
                           "wall_velocity = [1.0, 0.0, 0.0]\n";
-  petsc_check(PetscOptionsSetValue(nullptr, "-pressure_ksp_max_it", "1"), "PetscOptionsSetValue");
-  Stepper r(unit_deck(4, 1, 4, "\"y\"", 0.0, gas_only() + lid + "[numerics]\npressure_tolerance = 1e-14\n"));
-  // Each step's pressure KSP reads the options when the step starts: cleared after this one.
-  const auto result = r.flow.advance(r.c.state, r.c.old, 1e-2);
-  petsc_check(PetscOptionsClearValue(nullptr, "-pressure_ksp_max_it"), "PetscOptionsClearValue");
+  // Each step's pressure KSP reads the options when the step starts: the cap holds for this
+  // step and is cleared when it ends, however it ends.
+  struct CappedPressureSolve {
+    CappedPressureSolve() { petsc_check(PetscOptionsSetValue(nullptr, "-pressure_ksp_max_it", "1"), "PetscOptionsSetValue"); }
+    ~CappedPressureSolve() { PetscOptionsClearValue(nullptr, "-pressure_ksp_max_it"); }
+  };
+  solver::StepResult result;
+  {
+    const CappedPressureSolve cap;
+    Stepper r(unit_deck(4, 1, 4, "\"y\"", 0.0, gas_only() + lid + "[numerics]\npressure_tolerance = 1e-14\n"));
+    result = r.flow.advance(r.c.state, r.c.old, 1e-2);
+  }
   EXPECT_FALSE(result.converged);
   EXPECT_FALSE(result.failure.empty());
   EXPECT_NE(result.failure.find("pressure"), std::string::npos) << result.failure;

@@ -655,6 +655,10 @@ void Translator::numerics_and_output() {
   out_ << "shear_on_opening_faces = false   # as MFIX's zero viscosity in flow cells (docs/import-mfix.md)\n";
   // MFIX's SET_OUTFLOW copies the fluid cell's tangential velocities into a PO or PI cell.
   out_ << "copy_velocity_into_openings = true   # as MFIX's SET_OUTFLOW (docs/import-mfix.md)\n";
+  // MFIX's face and edge viscosities are harmonic means (AVG_H in GET_VCELL_SDIFF_TERMS and its
+  // siblings); with Bagnold's arithmetic default the bin's orifice cells against the side walls
+  // dilate into the kinetic regime, which MFIX's do not (cases/bin/mfix/README.md).
+  out_ << "viscosity_average = \"harmonic\"   # as MFIX's AVG_H (docs/import-mfix.md)\n";
   // A numerics choice, not MFIX's, measured on MFIX's 3-D bin decks: GAMG takes 0.93 (5 mm) and
   // 0.76 (10 mm) of hypre's CPU time for the same rate, and about the same on a 3-D bubbling bed
   // (docs/benchmarks.md, "The pressure preconditioner"); 2-D decks keep hypre.

@@ -92,7 +92,7 @@ RunSummary run_time_loop(const TimeLoopContext& context, FlowSolver& flow, run::
       failed = state;
       state = old;
       ++summary.redone_steps;
-      controller.failed(dt_try);
+      controller.failed(dt_try, step);
       const double dt = controller.dt();
       const std::string why =
           result.failure.empty()

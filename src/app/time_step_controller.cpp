@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
+#include <limits>
 
 namespace bagnold::app {
 
@@ -37,6 +38,18 @@ const TimeStepController::Cost* TimeStepController::recorded(double dt, long ste
   for (const auto& c : m_costs)
     if (std::abs(c.dt - dt) <= same_level * dt && step - c.step <= cost_memory_steps) return &c;
   return nullptr;
+}
+
+bool TimeStepController::failed_at_or_below(double dt, long step) const {
+  return std::any_of(m_costs.begin(), m_costs.end(), [&](const Cost& c) {
+    return std::isinf(c.per_second) && c.dt <= dt * (1 + same_level) &&
+           step - c.step <= cost_memory_steps;
+  });
+}
+
+void TimeStepController::failed(double taken, long step) {
+  record(taken, std::numeric_limits<double>::infinity(), step);
+  m_dt = 0.5 * taken;
 }
 
 void TimeStepController::record(double dt, double per_second, long step) {
@@ -74,7 +87,7 @@ std::string TimeStepController::converged(double taken, int iterations, double c
   if (iterations <= m_easy && full && dt < m_dt_max) {
     const double up = std::min(dt * m_growth, m_dt_max);
     const Cost* above = recorded(up, step);
-    if (!above || above->per_second < cost) {
+    if ((!above || above->per_second < cost) && !failed_at_or_below(up, step)) {
       next = up;
       why = fmt::format("converged in {} outer iterations", iterations);
     }

@@ -80,11 +80,40 @@ TEST(TimeStepController, CourantLimitCutsTheNextStep) {
 TEST(TimeStepController, FailureHalvesTheStepAndAShortenedStepRecordsNothing) {
   Controls c;
   app::TimeStepController dt(c.run, c.numerics, 1e-3);
-  dt.failed(1e-3);
+  dt.failed(1e-3, 0);
   EXPECT_DOUBLE_EQ(dt.dt(), 0.5e-3);
   // A step shortened to land on a snapshot does not grow dt.
   dt.converged(0.2e-3, 2, 0.0, 1);
   EXPECT_DOUBLE_EQ(dt.dt(), 0.5e-3);
+}
+
+// Steps fail at 0.65 ms and above and are easy below: after one failure dt climbs back to the
+// last level below the failed dt and stays there, instead of failing again every few steps;
+// once the failure is forgotten (100 steps) it is probed once more. A restart keeps the memory.
+TEST(TimeStepController, DoesNotGrowBackIntoAFailedStep) {
+  Controls c;
+  app::TimeStepController dt(c.run, c.numerics, 1e-3);
+  long step = 0;
+  int failures = 0;
+  auto advance = [&](app::TimeStepController& controller) {
+    const double taken = controller.dt();
+    if (taken >= 0.65e-3) {
+      ++failures;
+      controller.failed(taken, step);
+    } else {
+      controller.converged(taken, 3, 0.0, ++step);
+    }
+  };
+  for (int i = 0; i < 90; ++i) advance(dt);
+  EXPECT_EQ(failures, 2);  // 1 ms, then 0.72 ms (0.5 grown twice); then held at 0.62 ms
+  EXPECT_LT(dt.dt(), 0.65e-3);
+  app::TimeStepController restarted(c.run, c.numerics, dt.dt());
+  restarted.restore(dt.memory());
+  for (int i = 0; i < 5; ++i) advance(restarted);
+  EXPECT_EQ(failures, 2);
+  for (int i = 0; i < 200; ++i) advance(restarted);
+  EXPECT_GE(failures, 3);
+  EXPECT_LE(failures, 6);
 }
 
 }  // namespace

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
-#include <limits>
 
 namespace bagnold::app {
 
@@ -16,6 +15,13 @@ constexpr double hard_step_floor = 0.25;
 // slow change (the bin's 0.1 s at 1 ms steps), short enough that dt probes upwards again when
 // the flow has changed.
 constexpr long cost_memory_steps = 100;
+// How many steps a failed step's dt stays a ceiling for dt's growth: briefly after a first
+// failure, as a start-up transient drives dt down through failures that later steps need not
+// respect (the hourglass from rest fails six times in its first 0.6 ms), and for
+// cost_memory_steps once a step fails again within a growth factor below a remembered failure:
+// then the limit is the flow's (the 10 mm MKT bin at onset_smoothing 1e-4 fails at 0.6-0.7 ms
+// for the whole discharge).
+constexpr long first_failure_memory = 20;
 // Two dt values within this relative distance are the same level of the growth ladder.
 constexpr double same_level = 1e-9;
 // A Courant-limited dt within this fraction of the current one keeps the current one (the
@@ -36,26 +42,35 @@ TimeStepController::TimeStepController(const deck::RunControl& run, const deck::
 
 const TimeStepController::Cost* TimeStepController::recorded(double dt, long step) const {
   for (const auto& c : m_costs)
-    if (std::abs(c.dt - dt) <= same_level * dt && step - c.step <= cost_memory_steps) return &c;
+    if (!c.failed() && std::abs(c.dt - dt) <= same_level * dt &&
+        step - c.step <= cost_memory_steps)
+      return &c;
   return nullptr;
 }
 
 bool TimeStepController::failed_at_or_below(double dt, long step) const {
   return std::any_of(m_costs.begin(), m_costs.end(), [&](const Cost& c) {
-    return std::isinf(c.per_second) && c.dt <= dt * (1 + same_level) &&
-           step - c.step <= cost_memory_steps;
+    return c.failed() && c.dt <= dt * (1 + same_level) && step - c.step <= c.memory();
   });
 }
 
 void TimeStepController::failed(double taken, long step) {
-  record(taken, std::numeric_limits<double>::infinity(), step);
+  // A failure within a growth factor below one remembered (or forgotten within the last
+  // cost_memory_steps) is the flow's limit: remembered long.
+  const bool again = std::any_of(m_costs.begin(), m_costs.end(), [&](const Cost& c) {
+    return c.failed() && taken * m_growth >= c.dt * (1 - same_level) &&
+           step - c.step <= c.memory() + cost_memory_steps;
+  });
+  record(taken, -static_cast<double>(again ? cost_memory_steps : first_failure_memory), step);
   m_dt = 0.5 * taken;
 }
 
 void TimeStepController::record(double dt, double per_second, long step) {
-  // Records older than the memory are never read again: dropped, so the memory (written into
-  // every snapshot) stays small.
-  std::erase_if(m_costs, [&](const Cost& c) { return step - c.step > cost_memory_steps; });
+  // Records never read again are dropped, so the memory (written into every snapshot) stays
+  // small: a cost after cost_memory_steps, a failure that long after it is forgotten.
+  std::erase_if(m_costs, [&](const Cost& c) {
+    return step - c.step > (c.failed() ? c.memory() : 0) + cost_memory_steps;
+  });
   for (auto& c : m_costs)
     if (std::abs(c.dt - dt) <= same_level * dt) {
       c = {dt, per_second, step};

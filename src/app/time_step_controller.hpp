@@ -1,13 +1,13 @@
 #pragma once
 // The adaptive time step of a run (time_loop.hpp calls it after every step).
 //
-//   - A step that fails is redone with dt / 2 (failed()), and dt does not grow back to the dt
-//     that failed, or above it, while the failure is remembered: 20 steps after a first
-//     failure, cost_memory_steps after one that fails within a growth factor below a
-//     remembered one. Without it the 10 mm bin with MKT at onset_smoothing 1e-4, which fails at
-//     0.6-0.7 ms and converges in 3-4 outer iterations below, regrew into the failing dt every
-//     few steps (128 of 582 steps redone to 0.2 s, 40 outer iterations lost in each); the short
-//     first memory lets a start-up's failures at small dt be forgotten (the hourglass from rest).
+//   - A step that fails is redone with dt / 2 (failed()). One that fails again within a growth
+//     factor below a failure of the last cost_memory_steps steps has found the flow's limit:
+//     dt then does not grow back to it, or above it, for cost_memory_steps steps. Without that
+//     the 10 mm bin with MKT at onset_smoothing 1e-4, which fails at 0.6-0.7 ms and converges
+//     in 3-4 outer iterations below, regrew into the failing dt every few steps (128 of 582
+//     steps redone to 0.2 s, 40 outer iterations lost in each). A first failure does not hold
+//     dt back, so a start-up's failures at falling dt are not (the hourglass from rest).
 //   - After a converged step: it grows by numerics.dt_growth (up to run.dt_max) when it took at
 //     most numerics.easy_outer_iterations; it shrinks by dt_growth when it took more than
 //     numerics.hard_outer_iterations (if set), not below run.dt_max / 4.
@@ -51,10 +51,10 @@ class TimeStepController {
   struct Cost {
     double dt;             // [s]
     double per_second;     // outer iterations per simulated second; negative: the step
-                           // failed, and dt stays below it for -per_second steps
+                           // failed, and dt stays below it for -1 - per_second steps
     long step;             // when it was measured
     bool failed() const { return per_second < 0.0; }
-    long memory() const { return static_cast<long>(-per_second); }
+    long memory() const { return static_cast<long>(-1.0 - per_second); }
   };
   const Cost* recorded(double dt, long step) const;
   bool failed_at_or_below(double dt, long step) const;

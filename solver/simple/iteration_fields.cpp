@@ -20,6 +20,7 @@ CorrectionResponse::CorrectionResponse(std::size_t local_count) {
   for (auto& phase : pressure)
     for (auto& d : phase) d.assign(local_count, 0.0);
   for (auto& d : fraction) d.assign(local_count, 0.0);
+  for (auto& d : friction) d.assign(local_count, 0.0);
 }
 
 }  // namespace bagnold::solver

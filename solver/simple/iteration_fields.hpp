@@ -44,6 +44,7 @@ struct CorrectionResponse {
   explicit CorrectionResponse(std::size_t local_count);
   std::array<std::array<std::vector<double>, 3>, 2> pressure;  // d_m [m³ s/kg] per [phase][d]
   std::array<std::vector<double>, 3> fraction;                 // e [m³ s/kg] per d
+  std::array<std::vector<double>, 3> friction;                 // w [-] per d
 };
 
 }  // namespace bagnold::solver

@@ -203,6 +203,7 @@ void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d
           // The transpose's cross part μ ∂_d u_e on this face: ∂_d u_e from uc_e and un_e,
           // δ_d = half_c + half_n apart (so A/δ_d = width along t).
           row.b += s * edge_mu * (un_e - uc_e) * disc.width(l, t);
+          row.viscous += s * edge_mu * (un_e - uc_e) * disc.width(l, t);
         }
       }
       // What the row holds implicitly; under Newton the rest, (D − D_t), acts on the iterate.
@@ -215,6 +216,7 @@ void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d
           row.columns[row.count] = numbering.global[static_cast<std::size_t>(link.local)];
           row.values[row.count++] = -a_nb;
           row.neighbours_u += a_nb * at(link.local);
+          row.viscous += diffusion * (at(link.local) - at(l));
           row.neighbours_a += a_nb;
           if (limiter != Limiter::upwind) {
             double upwind_upwind, upwind, downwind;
@@ -245,6 +247,7 @@ void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d
           if (newton) row.b += (diffusion - tangent) * (value - at(l));
           row.force += (diffusion + convective) * std::abs(value - at(l));  // the whole wall stress
           if (link.kind == LinkKind::wall && e != d) row.wall_shear += diffusion * (value - at(l));
+          row.viscous += diffusion * (value - at(l));
           break;
         }
         case LinkKind::zero_gradient:

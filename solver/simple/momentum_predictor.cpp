@@ -26,6 +26,11 @@
 namespace bagnold::solver {
 
 namespace {
+// The friction response w (below) is taken only where the face's P_s is above this [Pa], and
+// kept within ±this, so that the fraction correction's coefficients (1 ± w) stay positive.
+constexpr double least_friction_pressure = 1e-3;
+constexpr double max_friction_response = 0.9;
+
 // The relaxed diagonal that the corrections see: SIMPLEC drops the neighbours' corrections.
 double correction_diagonal(double relaxed, double neighbours, bool simplec) {
   return simplec && relaxed - neighbours > 1e-12 * relaxed ? relaxed - neighbours : relaxed;
@@ -199,6 +204,17 @@ bool MomentumPredictor::predict(int d, const Inputs& in, run::FlowState& state,
     response.pressure[gas][ud][ul] = d_g;
     response.pressure[solids][ud][ul] = d_s;
     response.fraction[ud][ul] = e;
+    // The friction response w: the solids' stresses scale with P_s at a fixed strain rate (the
+    // frictional and dense closures: τ = η P_s), so a P_s change δP on the face moves its viscous
+    // force by F_visc δP/P; with the face's P the mean of its cells', the velocity responds by
+    // e w (δP_l + δP_n), w = F_visc / (2 A P_face) (volume_fraction_correction.cpp).
+    double w = 0.0;
+    if (s && l_fluid && n_fluid) {
+      const double p_face = 0.5 * (state.solids_pressure[ul] + state.solids_pressure[static_cast<std::size_t>(n)]);
+      if (p_face > least_friction_pressure)
+        w = std::clamp(s->viscous / (2.0 * any.area * p_face), -max_friction_response, max_friction_response);
+    }
+    response.friction[ud][ul] = w;
   }
   sums.interventions[negative_stiffness] += explicit_stiffness_faces;
 
@@ -219,6 +235,7 @@ bool MomentumPredictor::predict(int d, const Inputs& in, run::FlowState& state,
     parallel::exchange_halo<double>(layout, response.pressure[phase][ud]);
   }
   if (moves[solids]) parallel::exchange_halo<double>(layout, response.fraction[ud]);
+  if (moves[solids]) parallel::exchange_halo<double>(layout, response.friction[ud]);
   return solved;
 }
 

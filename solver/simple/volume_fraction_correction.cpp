@@ -79,8 +79,9 @@ bool VolumeFractionCorrection::correct(const run::FlowState& old, double dt,
       const bool neighbour_free = layout.kind(f.neighbour) == grid::CellKind::fluid;  // boundary ε' = 0
       double off = 0.0;
       const double diffusion = f.area * eps_up * f.of(e);
-      a_p += diffusion * stiffness(l);
-      off -= diffusion * stiffness(f.neighbour);
+      const double w = f.sign * f.of(response.friction);
+      a_p += diffusion * stiffness(l) * (1.0 + w);
+      off -= diffusion * stiffness(f.neighbour) * (1.0 - w);
       if (upwind_is_l) a_p += f.area * std::abs(u_out);
       else off -= f.area * std::abs(u_out);
       if (neighbour_free) {
@@ -112,10 +113,11 @@ bool VolumeFractionCorrection::correct(const run::FlowState& old, double dt,
     auto& velocity = state.solids_velocity[ud];
     for (const int l : disc.velocity_numbering(d).owned_locals) {
       const int n = layout.neighbour(l, 2 * d + 1);
+      const double w = response.friction[ud][static_cast<std::size_t>(l)];
       velocity[static_cast<std::size_t>(l)] +=
           e[ud][static_cast<std::size_t>(l)] *
-          (stiffness(l) * m_correction[static_cast<std::size_t>(l)] -
-           stiffness(n) * m_correction[static_cast<std::size_t>(n)]);
+          ((1.0 + w) * stiffness(l) * m_correction[static_cast<std::size_t>(l)] -
+           (1.0 - w) * stiffness(n) * m_correction[static_cast<std::size_t>(n)]);
     }
     parallel::exchange_halo<double>(layout, velocity);
   }

@@ -14,6 +14,10 @@
 // borders a loose one (the onset of a quasi-static pressure, K jumping by orders of magnitude
 // between them): a face mean of K would give the loose cell's ε' the packed cell's stiffness.
 // Then ε_s += ε', u_s += e (K_c ε'_c − K_n ε'_n); ε_g = 1 − ε_s.
+// The friction response: a dense stress scales with P_s at fixed strain rate, so each face's
+// velocity also responds to P_s through its viscous force: u' = e [(1 + w)(K ε')_c − (1 − w)
+// (K ε')_n] with w = F_visc / (2 A P_face) from the predictor (momentum_predictor.cpp); the
+// rows above take (1 ± w) on the cell's and its neighbour's e-terms (± as the face's side).
 // Compression is damped (compression_limit.hpp) and ε_s kept ≥ 0. Outer iterations take the rest.
 // Its residual is Σ|R_P| / Σ ½ Σ_faces |A ε_up u| (at least the volume flux of the residual
 // velocity scale through every face): the local sums go into IterationSums::continuity[1].

@@ -34,7 +34,8 @@ struct MomentumRow {
   double weight = 0.0;         // ε ρ V |g|
   double force = 0.0;          // Σ |force| of weight, pressure, P_s, walls, body force, floor (not drag)
   double wall_shear = 0.0;     // the walls' tangential force along d on the control volume [N]
-  double viscous = 0.0;        // the viscous force along d on the control volume at the iterate [N]
+  double viscous = 0.0;        // the viscous force along d on the control volume at the iterate,
+                               // walls' included, the dilatational term not [N]
   bool active = true;          // false: a solids row below the threshold, u_s = 0
   int count = 0;               // off-diagonal entries
   std::int64_t columns[7];     // the off-diagonal entries' columns, then room for the diagonal's

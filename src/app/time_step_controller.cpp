@@ -15,13 +15,6 @@ constexpr double hard_step_floor = 0.25;
 // slow change (the bin's 0.1 s at 1 ms steps), short enough that dt probes upwards again when
 // the flow has changed.
 constexpr long cost_memory_steps = 100;
-// A first failure does not hold dt back: a start-up drives dt down through failures that later
-// steps need not respect (the hourglass from rest fails six times in its first 0.6 ms, at dt
-// falling to 1.6e-5 s; holding dt below each for 20 steps cost it 4 % more outer iterations
-// to 0.6 s, for 100 steps 30 %). It is kept cost_memory_steps steps, to recognize a repeat: a
-// failure within a growth factor below it is the flow's limit (the 10 mm MKT bin at
-// onset_smoothing 1e-4 fails at 0.6-0.7 ms for the whole discharge), and holds dt below it
-// for cost_memory_steps steps.
 // Two dt values within this relative distance are the same level of the growth ladder.
 constexpr double same_level = 1e-9;
 // A Courant-limited dt within this fraction of the current one keeps the current one (the
@@ -55,8 +48,13 @@ bool TimeStepController::failed_at_or_below(double dt, long step) const {
 }
 
 void TimeStepController::failed(double taken, long step) {
-  // A repeat: within a growth factor below a failure still kept (cost_memory_steps after it
-  // stopped holding dt back).
+  // A first failure does not hold dt back: a start-up drives dt down through failures that
+  // later steps need not respect (the hourglass from rest fails six times in its first 0.6 ms,
+  // at dt falling to 1.6e-5 s; holding dt below each for 20 steps cost it 4 % more outer
+  // iterations to 0.6 s, for 100 steps 30 %). It is kept cost_memory_steps steps to recognize a
+  // repeat, a failure within a growth factor below it: that is the flow's limit (the 10 mm MKT
+  // bin at onset_smoothing 1e-4 failed at 0.6-0.7 ms for the whole discharge), and it holds
+  // dt below it for cost_memory_steps steps.
   const bool again = std::any_of(m_costs.begin(), m_costs.end(), [&](const Cost& c) {
     return c.failed() && taken * m_growth >= c.dt * (1 - same_level) &&
            step - c.step <= c.memory() + cost_memory_steps;

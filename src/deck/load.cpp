@@ -1,5 +1,6 @@
 #include "src/deck/load.hpp"
 
+#include <fmt/format.h>
 #include <fstream>
 #include <map>
 #include <set>
@@ -445,9 +446,7 @@ void check_initial_packing(const toml::table& root, const Deck& deck, Diagnostic
   }
   const double limit = model->packing_limit(deck.solids.material);
   // The limit as a reader writes it: 1 − ε_g* = 0.58, not its binary neighbour 0.58000000000000007.
-  std::ostringstream limit_text;
-  limit_text.precision(12);
-  limit_text << limit;
+  const std::string limit_text = fmt::format("{:.12g}", limit);
   const auto* array = root.get_as<toml::array>("initial");
   for (std::size_t i = 0; i < deck.initial.size(); ++i) {
     const double fraction = deck.initial[i].solids_fraction;
@@ -457,9 +456,9 @@ void check_initial_packing(const toml::table& root, const Deck& deck, Diagnostic
     diag.error(node ? node->source() : table ? table->source() : root.source(),
                "initial[" + std::to_string(i) + "].solids_fraction",
                "value " + to_toml_text(fraction) + " is above the packing limit " +
-                   limit_text.str() + " of the closure models.solids_stress.model = \"" +
+                   limit_text + " of the closure models.solids_stress.model = \"" +
                    choice.name + "\" for the deck's [solids]: expected at most " +
-                   limit_text.str() + " (docs/models.md gives each closure's limit)");
+                   limit_text + " (docs/models.md gives each closure's limit)");
   }
 }
 

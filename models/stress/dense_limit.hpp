@@ -26,7 +26,7 @@ namespace bagnold::models {
 struct DenseLimit {
   double jamming_margin = 0.01;                      // δ [-]
   double quasi_static_scale = 1.0;                   // s [-]
-  double onset_smoothing = dense_limit_onset_smoothing;  // x_s [-]
+  double onset_smoothing = default_onset_smoothing;  // x_s [-]
 
   static std::vector<CoefficientSpec> specs();
   static DenseLimit read(const Coefficients& c);

@@ -11,19 +11,14 @@
 
 namespace bagnold::models {
 
-// μ_max [Pa s] of the rheologies (steady-shear, steady-shear-cohesive): high enough that the
-// yield stress η_s p of a packed bed at the loads of a bin holds down to γ̇ ≈ 10⁻² 1/s, which
-// moves the bins' and the hourglass's discharge by no more than 10⁸ would (docs/models.md). The
-// kinetic models keep ViscosityLimits' 10⁵ (their plug is set by the dense limit's yield stress
-// at 10⁵ as at 10⁶, docs/benchmarks.md).
-inline constexpr double rheology_max_viscosity = 1e7;
-
 struct ViscosityLimits {
   double min_strain_rate = 1e-3;  // γ̇_min [1/s]
-  double max_viscosity = 1e5;     // μ_max [Pa s]
+  // μ_max [Pa s]: high enough that the yield stress of a packed bed at the loads of a bin holds
+  // down to γ̇ ≈ 10⁻² 1/s; at 10⁸ the bins' and the hourglass's discharge is the same
+  // (docs/models.md, docs/benchmarks.md). mfix-default has MFIX's own cap instead.
+  double max_viscosity = 1e7;
 
-  // The two keys with the defaults above, or with another μ_max (the rheologies' above,
-  // mfix-default: MFIX's cap).
+  // The two keys with the defaults above, or with another μ_max (mfix-default: MFIX's cap).
   static std::vector<CoefficientSpec> specs();
   static std::vector<CoefficientSpec> specs(double default_max_viscosity);
   static ViscosityLimits read(const Coefficients& c);

@@ -63,7 +63,7 @@ Constants read_constants(const Coefficients& c) {
            onset_smoothing_spec(Constants{}.onset_smoothing)},
           blended::stress_ratio_specs("App. A Eq. 11", "App. A Eq. 12", "Table II"),
           DiluteLimit::specs(DiluteLimit::Anchor::tangent),
-          ViscosityLimits::specs(rheology_max_viscosity)}),
+          ViscosityLimits::specs()}),
      .make = [](const Coefficients& c) -> std::unique_ptr<SolidsStressModel> {
        return std::make_unique<SteadyShear>(
            read_constants(c), DiluteLimit::read(c, DiluteLimit::Anchor::tangent),

@@ -17,7 +17,7 @@ struct Constants {
   double inertial = 0.021;            // α_inert
   double intermediate = 0.099;        // α_int
   blended::StressRatio stress_ratio;  // I_0, α₁, β₁, γ̂_0, α₂, β₂: both models' defaults
-  double onset_smoothing = rheology_onset_smoothing;  // x_s
+  double onset_smoothing = default_onset_smoothing;  // x_s
 };
 
 // The blended constants at friction μ: App. A Tables I–II, ε = 2/3, χ = 2 (Eqs. 8–10).

@@ -104,7 +104,7 @@ Constants read_constants(const Coefficients& c) {
                      "Table I."),
            onset_smoothing_spec(Constants{}.onset_smoothing)},
           blended::stress_ratio_specs("App. D Eq. 14", "App. D Eq. 15", "Table I"),
-          ViscosityLimits::specs(rheology_max_viscosity)}),
+          ViscosityLimits::specs()}),
      .make = [](const Coefficients& c) -> std::unique_ptr<SolidsStressModel> {
        return std::make_unique<SteadyShearCohesive>(read_constants(c), ViscosityLimits::read(c));
      }});

@@ -21,7 +21,7 @@ struct Constants {
   double cohesive_2 = 0.008;              // α_coh,2
   blended::StressRatio stress_ratio;  // I_0, α₁, β₁, γ̂_0, α₂, β₂: both models' defaults
   double cohesive_rate = 0.1;         // α₄
-  double onset_smoothing = rheology_onset_smoothing;  // x_s
+  double onset_smoothing = default_onset_smoothing;  // x_s
 };
 
 // The blended constants at friction μ from App. D Table I.

@@ -152,16 +152,16 @@ TEST(Mkt, PressureStaysStiffAndFiniteAtAndAboveCriticalFraction) {
     EXPECT_GE(at_rest.pressure, previous);
     previous = at_rest.pressure;
   }
-  // It is α_QS(0.3) (k/d) x² (x² + x_s²)^{-2/3} with the default x_s = 0.01, and far from onset
-  // Eq. 8's power law x^{2/3}: at x = 0.1 to the smoothing's relative error ≈ ⅔ (x_s/x)² = 0.7 %.
+  // It is α_QS(0.3) (k/d) x² (x² + x_s²)^{-2/3} with the default x_s = 10⁻⁴, and far from onset
+  // Eq. 8's power law x^{2/3}: at x = 0.1 to the smoothing's relative error ≈ ⅔ (x_s/x)² = 7e-7.
   const auto at_rest = probe(*model, m, onset + 0.05, 0.0);
-  EXPECT_NEAR(at_rest.pressure, 0.14 * 1e8 * 0.05 * 0.05 * std::pow(0.05 * 0.05 + 1e-4, -2.0 / 3.0),
+  EXPECT_NEAR(at_rest.pressure, 0.14 * 1e8 * 0.05 * 0.05 * std::pow(0.05 * 0.05 + 1e-8, -2.0 / 3.0),
               1e-9 * at_rest.pressure);
   const double far = probe(*model, m, onset + 0.1, 0.0).pressure;
-  EXPECT_NEAR(far, 0.14 * 1e8 * std::pow(0.1, 2.0 / 3.0), 0.01 * far);
+  EXPECT_NEAR(far, 0.14 * 1e8 * std::pow(0.1, 2.0 / 3.0), 1e-5 * far);
   EXPECT_LT(far, 0.14 * 1e8 * std::pow(0.1, 2.0 / 3.0));
   // At rest the shear viscosity is the regularized yield stress η_s P/γ̇_min, capped.
-  EXPECT_DOUBLE_EQ(at_rest.shear_viscosity, 1e5);
+  EXPECT_DOUBLE_EQ(at_rest.shear_viscosity, 1e7);
 }
 
 TEST(Mkt, PressureDerivativeMatchesFiniteDifferences) {

@@ -111,7 +111,7 @@ TEST(SteadyShearCohesive, ItsNonRefitConstantsHaveTheSteadyShearDefaults) {
   const models::steady_shear::Constants a;
   const models::steady_shear_cohesive::Constants d;
   EXPECT_EQ(d.onset_smoothing, a.onset_smoothing);
-  EXPECT_EQ(d.onset_smoothing, models::rheology_onset_smoothing);
+  EXPECT_EQ(d.onset_smoothing, models::default_onset_smoothing);
   EXPECT_EQ(d.onset_smoothing, 1e-4);  // the value the decks and docs/models.md give
   // The stress-ratio constants are one struct with one set of defaults (App. A Table II).
   EXPECT_EQ(d.stress_ratio.transition_inertial_number, 0.32);
@@ -144,7 +144,7 @@ TEST(SteadyShearCohesive, AtZeroBondNumberWithAppendixATablesIsSteadyShearExactl
     ASSERT_GT(c.cohesive_2, 0.0);
     ASSERT_GT(c.cohesive_stress_ratio, 0.0);
     models::ViscosityLimits limits;  // the rheologies' declared defaults
-    limits.max_viscosity = models::rheology_max_viscosity;
+    limits.max_viscosity = models::ViscosityLimits{}.max_viscosity;
     const auto cohesive = [&](double phi, double rate, double) {
       return blended::point_stress(phi, rate, dry, c, limits);
     };
@@ -170,7 +170,7 @@ TEST(SteadyShearCohesive, AtZeroBondNumberItIsTheBlendedRheologyWithAppendixDTab
     const Material dry = powder(0.0, mu);
     const auto c = models::steady_shear_cohesive::constants_at(mu, {});
     models::ViscosityLimits limits;  // the rheologies' declared defaults
-    limits.max_viscosity = models::rheology_max_viscosity;
+    limits.max_viscosity = models::ViscosityLimits{}.max_viscosity;
     const auto blended_d = [&](double phi, double rate, double) {
       return blended::point_stress(phi, rate, dry, c, limits);
     };

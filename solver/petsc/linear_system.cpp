@@ -65,7 +65,9 @@ void LinearSystem::set_row(std::int64_t row, const std::int64_t* columns, const 
   const auto width = static_cast<std::size_t>(m_pattern.offsets[r + 1]) - begin;
   const std::int64_t* pattern = m_pattern.columns.data() + begin;
   double* slots = m_values.data() + begin;
-  bool set[8] = {false, false, false, false, false, false, false, false};
+  constexpr std::size_t widest = 32;
+  if (width > widest) throw std::logic_error("LinearSystem::set_row: a row wider than 32 entries");
+  bool set[widest] = {};
   std::size_t next = 0;  // where the previous entry's slot ended
   for (int i = 0; i < count; ++i) {
     // Rows usually list their columns in the pattern's order, or in it but for one entry (the

@@ -30,6 +30,10 @@ bool FlowSolver::iterate(run::FlowState& state, const run::FlowState& old, doubl
       if (!m_predictor.predict(d, inputs, state, f.response, sums, f.worst, result)) return false;
       for (const Phase phase : {gas, solids}) carry_fractions(disc, state, phase, d, f.carried);
     }
+    if (m_predictor.coupled_solids()) {
+      if (!m_predictor.solve_coupled_solids(state, result)) return false;
+      for (int d = 0; d < 3; ++d) carry_fractions(disc, state, solids, d, f.carried);
+    }
   }
   if (m_pressure) {
     const ScopedStage stage(Stage::pressure);

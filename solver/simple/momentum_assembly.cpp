@@ -10,7 +10,9 @@
 //                    normal to d (so the normal viscous stress is 2 μ ∂_d u_d);
 //   ∂_e(μ ∂_d u_e)   e ≠ d, the transpose's cross part: explicit from the current iterate, at
 //                    the CV's edges, with the same edge viscosity as D (MFIX's calc_tau_u_s
-//                    does the same; it converges with the outer iteration);
+//                    does the same; it converges with the outer iteration); the row also
+//                    records its terms c u_e, which numerics.solids_momentum = "coupled" moves
+//                    into the matrix (coupled_solids_momentum.hpp);
 //   ∂_d((λ − ⅔ μ) ∇·u)  explicit from the cell centres' ∇·u (closures.hpp).
 // Face and edge viscosities are the harmonic means of the cells around them (MFIX's AVG_H,
 // nested over an edge's four cells), or arithmetic (numerics.viscosity_average).
@@ -49,6 +51,7 @@
 // partial-slip law's c_w A), which the monitor sums (wall_shear_* columns).
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "solver/simple/face_fractions.hpp"
 #include "solver/simple/momentum_rows.hpp"
@@ -204,6 +207,13 @@ void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d
           // δ_d = half_c + half_n apart (so A/δ_d = width along t).
           row.b += s * edge_mu * (un_e - uc_e) * disc.width(l, t);
           row.viscous += s * edge_mu * (un_e - uc_e) * disc.width(l, t);
+          const double cross = s * edge_mu * disc.width(l, t);
+          for (const auto& [cell, sign] : {std::pair{nv, 1.0}, std::pair{cv, -1.0}})
+            if (cell >= 0) {
+              row.cross_cell[row.cross_count] = cell;
+              row.cross_component[row.cross_count] = e;
+              row.cross_coefficient[row.cross_count++] = sign * cross;
+            }
         }
       }
       // What the row holds implicitly; under Newton the rest, (D − D_t), acts on the iterate.

@@ -8,7 +8,8 @@
 //     (A_g − (βV)²/A_s) u_g = b_g + Σ a_nb u_nb + βV R_s / A_s       (and likewise the solids),
 // so a strong drag couples the phases within the predictor instead of across outer iterations.
 // Then Patankar under-relaxation (diag / α_u, b + (1 − α_u) diag u*), and one BiCGStab solve per
-// phase. Where the solids are below the threshold their velocity is zero (and the gas sees
+// phase (numerics.solids_momentum = "coupled": the solids rows of the three components go into
+// one system, solved after the third, coupled_solids_momentum.hpp). Where the solids are below the threshold their velocity is zero (and the gas sees
 // β (0 − u_g)); a frozen solids phase enters with its given velocity.
 //
 // The corrections' velocity responses come from the same 2 × 2 system with the relaxed
@@ -61,6 +62,18 @@ MomentumPredictor::MomentumPredictor(const deck::Deck& deck, const Discretizatio
   }
   if (settings.moves[solids] && closure)
     m_walls = std::make_unique<SolidsWallCoefficients>(deck, discretization, *closure);
+  if (settings.moves[solids] && settings.coupled_solids_momentum) {
+    krylov.solve_decoupled_rows_directly = true;
+    m_coupled = std::make_unique<CoupledSolidsMomentum>(discretization, krylov);
+  }
+}
+
+bool MomentumPredictor::solve_coupled_solids(run::FlowState& state, StepResult& record) {
+  const SolveReport report = m_coupled->solve(state.solids_velocity);
+  record.linear_iterations[momentum_systems] += report.iterations;
+  if (report.converged) return true;
+  record.failure = "the coupled solids momentum linear solve did not converge (" + report.reason + ")";
+  return false;
 }
 
 bool MomentumPredictor::predict(int d, const Inputs& in, run::FlowState& state,
@@ -172,9 +185,13 @@ bool MomentumPredictor::predict(int d, const Inputs& in, run::FlowState& state,
         diagonal /= alpha;
         rhs += (1.0 - alpha) * diagonal * u_s[ul];
       }
-      row.columns[row.count] = numbering.global[ul];
-      row.values[row.count] = diagonal;
-      m_systems[solids][ud]->set_row(numbering.global[ul], row.columns, row.values, row.count + 1, rhs);
+      if (m_coupled) {
+        m_coupled->set_row(d, r, row, diagonal, rhs, state.solids_velocity);
+      } else {
+        row.columns[row.count] = numbering.global[ul];
+        row.values[row.count] = diagonal;
+        m_systems[solids][ud]->set_row(numbering.global[ul], row.columns, row.values, row.count + 1, rhs);
+      }
       x[solids][r] = s ? u_s[ul] : 0.0;
     }
 
@@ -221,6 +238,10 @@ bool MomentumPredictor::predict(int d, const Inputs& in, run::FlowState& state,
   bool solved = true;
   for (const Phase phase : {gas, solids}) {
     if (!moves[phase]) continue;
+    if (phase == solids && m_coupled) {
+      parallel::exchange_halo<double>(layout, response.pressure[phase][ud]);
+      continue;
+    }
     auto& u = phase == gas ? u_g : u_s;
     const SolveReport report = m_systems[phase][ud]->solve(x[phase]);
     record.linear_iterations[momentum_systems] += report.iterations;

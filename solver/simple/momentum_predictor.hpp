@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "solver/petsc/linear_system.hpp"
+#include "solver/simple/coupled_solids_momentum.hpp"
 #include "solver/simple/momentum_rows.hpp"
 #include "solver/simple/step_record.hpp"
 
@@ -40,11 +41,17 @@ class MomentumPredictor {
   bool predict(int d, const Inputs& in, run::FlowState& state, CorrectionResponse& response,
                IterationSums& sums, WorstCells& worst, StepResult& record);
 
+  // numerics.solids_momentum = "coupled": predict() assembles the solids rows of each component
+  // into one system, which this solves (after predict() for d = 0, 1, 2) into `state`.
+  bool coupled_solids() const { return m_coupled != nullptr; }
+  bool solve_coupled_solids(run::FlowState& state, StepResult& record);
+
  private:
   const Discretization& m_discretization;
   const SolverSettings& m_settings;
   std::unique_ptr<SolidsWallCoefficients> m_walls;  // null unless the solids move
   std::array<std::array<std::unique_ptr<LinearSystem>, 3>, 2> m_systems;  // [phase][d]
+  std::unique_ptr<CoupledSolidsMomentum> m_coupled;  // null unless numerics.solids_momentum = "coupled"
   std::array<std::vector<double>, 3> m_gas_source;
   std::array<std::vector<MomentumRow>, 2> m_rows;  // scratch, per phase
   std::array<std::vector<double>, 2> m_x;          // scratch, per phase

@@ -21,6 +21,7 @@ struct MomentumRow {
     a = b = neighbours_a = neighbours_u = transient = fraction = area = volume = weight = force = wall_shear = viscous = 0.0;
     active = true;
     count = 0;
+    cross_count = 0;
   }
 
   double a = 0.0;              // diagonal: convection, diffusion, transient
@@ -40,6 +41,12 @@ struct MomentumRow {
   int count = 0;               // off-diagonal entries
   std::int64_t columns[7];     // the off-diagonal entries' columns, then room for the diagonal's
   double values[7];            // −a_nb, then the predictor's diagonal
+  // The transpose's cross part, which b holds at the iterate, as its terms c u_e: the local cell
+  // whose face carries u_e, the component e and c (coupled_solids_momentum.hpp).
+  int cross_count = 0;
+  int cross_cell[8];
+  int cross_component[8];
+  double cross_coefficient[8];
 };
 
 // What the assembly reads besides the iterate.

@@ -29,6 +29,8 @@ SolverSettings::SolverSettings(const deck::Deck& deck, const parallel::Domain& d
       viscosity_linearization(deck::choice_value(deck::viscosity_linearization_choices,
                                                  deck.numerics.viscosity_linearization,
                                                  "viscosity linearization")),
+      coupled_solids_momentum(deck::choice_value(deck::solids_momentum_choices, deck.numerics.solids_momentum,
+                                                 "solids momentum") == deck::SolidsMomentum::coupled),
       vacant_fraction(deck.numerics.vacant_fraction) {
   double extent = 0.0, g2 = 0.0;
   for (int d = 0; d < 3; ++d) {

@@ -44,6 +44,7 @@ struct SolverSettings {
   deck::ViscosityAverage viscosity_average = deck::ViscosityAverage::arithmetic;
   bool shear_on_opening_faces = true;  // numerics.shear_on_opening_faces
   deck::ViscosityLinearization viscosity_linearization = deck::ViscosityLinearization::picard;
+  bool coupled_solids_momentum = false;  // numerics.solids_momentum = "coupled"
   double vacant_fraction = 1e-8;  // numerics.vacant_fraction: Θ = 0 at or below this ε_s
 };
 

@@ -64,6 +64,12 @@ enum class ViscosityLinearization { picard, newton };
 inline constexpr std::array<Choice<ViscosityLinearization>, 2> viscosity_linearization_choices{
     {{"picard", ViscosityLinearization::picard}, {"newton", ViscosityLinearization::newton}}};
 
+// numerics.solids_momentum: the solids momentum components solved one at a time or together
+// (solver/simple/coupled_solids_momentum.hpp).
+enum class SolidsMomentum { segregated, coupled };
+inline constexpr std::array<Choice<SolidsMomentum>, 2> solids_momentum_choices{
+    {{"segregated", SolidsMomentum::segregated}, {"coupled", SolidsMomentum::coupled}}};
+
 // numerics.algorithm: the pressure-velocity coupling (solver/simple/momentum_predictor.cpp).
 enum class Coupling { simplec, simple };
 inline constexpr std::array<Choice<Coupling>, 2> coupling_choices{

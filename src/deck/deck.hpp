@@ -153,6 +153,7 @@ struct Numerics {
   std::string viscosity_average = "arithmetic";  // arithmetic | harmonic
   bool shear_on_opening_faces = true;  // false: an opening's velocity faces feel no wall or edge shear (MFIX)
   std::string viscosity_linearization = "picard";  // picard | newton
+  std::string solids_momentum = "segregated";  // segregated | coupled
   double solids_bulk_viscosity_ratio = 0.0;  // r μ_s added to the closure's λ_s
   double pressure_shear_rate_relaxation_time = 0.0;  // τ_P [s]: P_s at γ̇ relaxed over τ_P
   double relax_pressure = 1.0;           // α_p (SIMPLE needs about 0.3)

@@ -395,6 +395,15 @@ const Section<Numerics>& numerics_section() {
                "per face (N = √2 D/γ̇), and the rest of μ_s acts on the current iterate, so the "
                "converged step is the same; n comes from a second closure evaluation at 1.0001 γ̇. "
                "Does not change the model, only how the iteration reaches it (docs/solver.md)."),
+      key(&Numerics::solids_momentum, "solids_momentum").init()
+          .one_of(choice_names(solids_momentum_choices))
+          .doc("How the three solids momentum components are solved in each outer iteration. "
+               "segregated: one component after the other, the transpose's cross part "
+               "∂_e(μ_s ∂_d u_e), e ≠ d, on the right-hand side at the current iterate (as MFIX). "
+               "coupled: the three in one linear system with the cross part in the matrix, for "
+               "where a large μ_s (a stagnant zone's) couples the components strongly. The same "
+               "equations either way: it changes how a step converges, not what it converges to "
+               "(docs/solver.md)."),
       key(&Numerics::solids_bulk_viscosity_ratio, "solids_bulk_viscosity_ratio").unit("-").init()
           .within(0.0, 100.0)
           .doc("r: a bulk viscosity r μ_s added to the closure's own λ_s (σ = −P_s I + 2 μ_s D + "

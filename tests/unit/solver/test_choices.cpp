@@ -40,6 +40,13 @@ TEST(Choices, ViscosityLinearizationsAreExactlyTheShippedOnes) {
             deck::ViscosityLinearization::newton);
 }
 
+TEST(Choices, SolidsMomentumSolvesAreExactlyTheShippedOnes) {
+  const std::vector<std::string> shipped = {"segregated", "coupled"};
+  EXPECT_EQ(deck::choice_names(deck::solids_momentum_choices), shipped);
+  EXPECT_EQ(deck::choice_value(deck::solids_momentum_choices, "coupled", "solids momentum"),
+            deck::SolidsMomentum::coupled);
+}
+
 // Each limiter ψ(r) is TVD (0 ≤ ψ ≤ min(2r, 2)) and second order (ψ(1) = 1), except upwind.
 TEST(Choices, EveryShippedLimiterIsTvdAndSecondOrder) {
   for (const auto& c : deck::limiter_choices) {

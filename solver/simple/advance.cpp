@@ -14,6 +14,21 @@
 
 namespace bagnold::solver {
 
+namespace {
+// numerics.residual_normalization = "mfix": a continuity imbalance below this fraction of the
+// throughput the velocity scale carries counts as none (MFIX's 10⁻¹⁵ floor on RESID_P, in units
+// that do not depend on the case).
+constexpr double mfix_least_imbalance = 1e-12;
+
+// MFIX's CHECK_CONVERGENCE: the sum of the momentum and continuity residuals (the granular
+// energy, which MFIX judges on its own, by its own size).
+double mfix_sum(const Residuals& residuals) {
+  double sum = 0.0;
+  for (int e = 0; e <= solids_continuity; ++e) sum += residuals.value[static_cast<std::size_t>(e)];
+  return std::max(sum, residuals.value[granular_energy]);
+}
+}  // namespace
+
 bool FlowSolver::iterate(run::FlowState& state, const run::FlowState& old, double dt, bool first,
                          double velocity_scale, IterationSums& sums, StepResult& result) {
   const Discretization& disc = m_discretization;
@@ -65,6 +80,11 @@ StepResult FlowSolver::advance(run::FlowState& state, const run::FlowState& old,
   if (m_pressure) m_pressure->start_step();
   if (m_anderson) m_anderson->start_step(old);
   StallWatch stall_watch;
+  // numerics.residual_normalization = "mfix": each continuity residual against its value in the
+  // step's first outer iteration (MFIX's NORM_G and NORM_S from RESID_P of iteration 1,
+  // iterate.f), and the decision on the sum of all (CHECK_CONVERGENCE).
+  const bool mfix = m_settings.residual_normalization == ResidualNormalization::mfix;
+  std::array<double, 2> first_imbalance{0.0, 0.0};
   for (int iteration = 1; iteration <= m_settings.max_outer_iterations; ++iteration) {
     IterationSums sums;
     const double velocity_scale = residual_velocity_scale(state, largest_scale, &sums);
@@ -85,8 +105,25 @@ StepResult FlowSolver::advance(run::FlowState& state, const run::FlowState& old,
     for (int c = 0; c < 2; ++c) {
       const auto& [imbalance, throughput] = sums.continuity[static_cast<std::size_t>(c)];
       const bool solved = c == 0 ? m_pressure != nullptr : m_fraction != nullptr;
-      result.residuals.value[static_cast<std::size_t>(mixture_continuity + c)] =
-          !solved || imbalance <= 1e-300 ? 0.0 : imbalance / std::max(throughput, least_throughput);
+      double value = 0.0;
+      if (!solved || imbalance <= 1e-300) {
+        value = 0.0;
+      } else if (!mfix) {
+        value = imbalance / std::max(throughput, least_throughput);
+      } else {
+        // Until an iteration's imbalance is above the floor it becomes the reference (1).
+        const double floor = mfix_least_imbalance * least_throughput;
+        double& first = first_imbalance[static_cast<std::size_t>(c)];
+        if (imbalance <= floor) {
+          value = 0.0;
+        } else if (iteration > 1 && first > floor) {
+          value = imbalance / first;
+        } else {
+          first = imbalance;
+          value = 1.0;
+        }
+      }
+      result.residuals.value[static_cast<std::size_t>(mixture_continuity + c)] = value;
     }
     const auto& [energy_imbalance, energy_scale] = sums.energy;
     result.residuals.value[granular_energy] =
@@ -94,7 +131,7 @@ StepResult FlowSolver::advance(run::FlowState& state, const run::FlowState& old,
     result.wall_shear = sums.wall_shear;
     for (int i = 0; i < intervention_count; ++i)
       result.interventions[static_cast<std::size_t>(i)] += sums.interventions[static_cast<std::size_t>(i)];
-    const double largest = result.residuals.largest();
+    const double largest = mfix ? mfix_sum(result.residuals) : result.residuals.largest();
     if (iteration == 1) result.first_largest = largest;
     if (trace) {
       const auto where = worst_cell(result.residuals.worst());  // collective

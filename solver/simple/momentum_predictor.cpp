@@ -31,6 +31,10 @@ namespace {
 // kept within ±this, so that the fraction correction's coefficients (1 ± w) stay positive.
 constexpr double least_friction_pressure = 1e-3;
 constexpr double max_friction_response = 0.9;
+// numerics.residual_normalization = "mfix": MFIX's SMALL_NUMBER (rows slower than this [m/s] do
+// not count) and DIL_EP_S (solids rows at or below this fraction do not count).
+constexpr double mfix_least_speed = 1e-15;
+constexpr double mfix_dilute_fraction = 1e-4;
 
 // The relaxed diagonal that the corrections see: SIMPLEC drops the neighbours' corrections.
 double correction_diagonal(double relaxed, double neighbours, bool simplec) {
@@ -145,12 +149,24 @@ bool MomentumPredictor::predict(int d, const Inputs& in, run::FlowState& state,
 
     // The row's residual at the current iterate, with the drag on the other phase's velocity.
     auto add_residual = [&](Phase phase, const MomentumRow& row, double A, double u, double u_other) {
+      double mfix_scale = 0.0;
+      bool mfix_counted = true;
+      if (settings.residual_normalization == ResidualNormalization::mfix) {
+        // MFIX's CALC_RESID_U: the eliminated diagonal times the speed at the row's cell.
+        const auto& v = phase == gas ? state.gas_velocity : state.solids_velocity;
+        const double speed = std::sqrt(v[0][ul] * v[0][ul] + v[1][ul] * v[1][ul] + v[2][ul] * v[2][ul]);
+        const double other = phase == gas ? A_s : A_g;
+        const double eliminated = other > 0.0 ? A - beta_v * beta_v / other : A;
+        mfix_scale = std::abs(eliminated) * speed;
+        mfix_counted = speed > mfix_least_speed && (phase == gas || row.fraction > mfix_dilute_fraction);
+      }
       const double row_residual = residual[phase].add(
           phase == gas ? gas_sums : solids_sums,
           {.diagonal = A, .operator_u = A * u - row.neighbours_u,
            .operator_one = A - row.neighbours_a, .source = row.b + beta_v * u_other,
            .transient = row.transient, .weight = row.weight,
-           .force = row.force + std::abs(beta_v * (u_other - u))});
+           .force = row.force + std::abs(beta_v * (u_other - u)),
+           .mfix_scale = mfix_scale, .mfix_counted = mfix_counted});
       worst.record((phase == gas ? gas_momentum_x : solids_momentum_x) + d, row_residual, l);
     };
 

@@ -9,6 +9,7 @@ namespace bagnold::solver {
 
 double MomentumResidual::add(Sums& sums, const Row& row) const {
   auto& [residual, norm, net, total_weight] = sums.values;
+  if (m_kind == ResidualNormalization::mfix && !row.mfix_counted) return 0.0;
   const double row_residual = std::abs(row.source - row.operator_u);
   residual += row_residual;
   net += row.source - row.operator_u;
@@ -24,6 +25,9 @@ double MomentumResidual::add(Sums& sums, const Row& row) const {
     }
     case ResidualNormalization::velocity_scale:
       norm += row.diagonal * m_velocity_scale;
+      break;
+    case ResidualNormalization::mfix:
+      norm += row.mfix_scale;
       break;
   }
   return row_residual;

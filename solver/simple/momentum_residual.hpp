@@ -25,6 +25,12 @@
 //     row that cancel for a uniform field enter only through the velocity's deviation from its
 //     mean; but at small dt the transient part (ε ρ V/dt)|u − ū| of a sheared layer outweighs
 //     the weight per row, and the free-slip chute accepts steps 6.6 % short of g sin θ over 20 ms.
+//   "mfix": MFIX 21.3's CALC_RESID_U/V/W: Σ |A_e| |u|, A_e the diagonal after the drag's partial
+//     elimination (unrelaxed) and |u| the phase's velocity magnitude from the three components
+//     stored at the row's cell; rows with |u| ≤ 10⁻¹⁵, and solids rows with ε_s ≤ 10⁻⁴ (MFIX's
+//     DIL_EP_S), count in neither sum. advance.cpp then also takes the continuity residuals
+//     relative to the step's first outer iteration and compares their sum with the momentum
+//     residuals' with numerics.tolerance, as MFIX's CHECK_CONVERGENCE does with TOL_RESID.
 #include <array>
 #include <cstddef>
 #include <string>
@@ -59,6 +65,8 @@ class MomentumResidual {
   struct Row {
     double diagonal = 0.0, operator_u = 0.0, operator_one = 0.0, source = 0.0, transient = 0.0;
     double weight = 0.0, force = 0.0;
+    double mfix_scale = 0.0;   // "mfix": |A_e| |u|
+    bool mfix_counted = true;  // "mfix": whether the row counts (|u| and ε_s above MFIX's floors)
   };
 
   MomentumResidual() = default;

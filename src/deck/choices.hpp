@@ -46,11 +46,12 @@ inline constexpr std::array<Choice<Limiter>, 5> limiter_choices{{{"upwind", Limi
                                                                  {"minmod", Limiter::minmod}}};
 
 // numerics.residual_normalization (solver/simple/momentum_residual.hpp).
-enum class ResidualNormalization { force, deviation, velocity_scale };
-inline constexpr std::array<Choice<ResidualNormalization>, 3> residual_normalization_choices{
+enum class ResidualNormalization { force, deviation, velocity_scale, mfix };
+inline constexpr std::array<Choice<ResidualNormalization>, 4> residual_normalization_choices{
     {{"force", ResidualNormalization::force},
      {"velocity-scale", ResidualNormalization::velocity_scale},
-     {"deviation", ResidualNormalization::deviation}}};
+     {"deviation", ResidualNormalization::deviation},
+     {"mfix", ResidualNormalization::mfix}}};
 
 // numerics.viscosity_average: how a face or edge viscosity is made from the cells around it
 // (solver/simple/momentum_assembly.cpp).

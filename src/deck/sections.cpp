@@ -296,7 +296,11 @@ const Section<Numerics>& numerics_section() {
                "step passes only when the momentum equations hold to the tolerance times those "
                "forces and no viscosity or short step can hide an unbalanced one. velocity-scale: "
                "Σ a_P U (U the largest velocity), which a large μ_s inflates. deviation: "
-               "Σ(|Lu − L1 ū| + |s − L1 ū|) (OpenFOAM's), which a short step inflates."),
+               "Σ(|Lu − L1 ū| + |s − L1 ū|) (OpenFOAM's), which a short step inflates. mfix: "
+               "MFIX 21.3's test, to compare with MFIX at its tol_resid: Σ|A| |u| (MFIX's "
+               "CALC_RESID_U), the continuity residuals against the step's first outer "
+               "iteration, and their sum with the momentum residuals' against the tolerance "
+               "(CHECK_CONVERGENCE)."),
       key(&Numerics::net_force_residual, "net_force_residual").init()
           .doc("Whether each momentum residual must also have a small net: |Σ (s − L u)| over the "
                "phase's rows, against the phase's weight Σ ε ρ V |g|, below the tolerance. The "

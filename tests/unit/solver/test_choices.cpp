@@ -18,10 +18,11 @@ TEST(Choices, ConvectionLimitersAreExactlyTheShippedOnes) {
 }
 
 TEST(Choices, ResidualNormalizationsAreExactlyTheShippedOnes) {
-  const std::vector<std::string> shipped = {"force", "velocity-scale", "deviation"};
+  const std::vector<std::string> shipped = {"force", "velocity-scale", "deviation", "mfix"};
   EXPECT_EQ(deck::choice_names(deck::residual_normalization_choices), shipped);
   EXPECT_EQ(solver::residual_normalization_from_name("force"), solver::ResidualNormalization::force);
   EXPECT_EQ(solver::residual_normalization_from_name("deviation"), solver::ResidualNormalization::deviation);
+  EXPECT_EQ(solver::residual_normalization_from_name("mfix"), solver::ResidualNormalization::mfix);
   EXPECT_EQ(solver::residual_normalization_from_name("velocity-scale"),
             solver::ResidualNormalization::velocity_scale);
   EXPECT_THROW(solver::residual_normalization_from_name("l2"), std::invalid_argument);

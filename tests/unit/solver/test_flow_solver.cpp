@@ -84,6 +84,24 @@ TEST(FlowSolver, AMovingTwoPhaseStepKeepsTheSolidsInventory) {
   for (const double f : r.flow.stepped_solids_flux(r.c.state)) EXPECT_EQ(f, 0.0);
 }
 
+TEST(FlowSolver, TheMfixTestJudgesTheSumWithContinuityAgainstTheFirstIteration) {
+  // numerics.residual_normalization = "mfix" (MFIX's CHECK_CONVERGENCE): the first outer
+  // iteration's continuity imbalance is the reference, so that iteration cannot end the step,
+  // and the step ends when the sum of all residuals is within the tolerance.
+  Stepper r(unit_deck(3, 3, 6, "\"x\", \"y\"", 0.0,
+                  two_fluid() + tight + "tolerance = 1e-3\nresidual_normalization = \"mfix\"\n"
+                                        "[[initial]]\nsolids_fraction = 0.2\n"
+                                        "[[initial]]\nmax = [1.0, 1.0, 0.03]\nsolids_fraction = 0.3\n"
+                                        "solids_velocity = [0.0, 0.0, 0.02]\n"));
+  const auto result = r.flow.advance(r.c.state, r.c.old, 1e-3);
+  ASSERT_TRUE(result.converged) << result.failure << " after " << result.iterations;
+  EXPECT_GE(result.iterations, 2);
+  double sum = 0.0;
+  for (int e = 0; e <= solver::solids_continuity; ++e) sum += result.residuals.value[static_cast<std::size_t>(e)];
+  EXPECT_LE(sum, 1e-3);
+  EXPECT_GT(result.residuals.value[solver::mixture_continuity] + result.residuals.value[solver::solids_continuity], 0.0);
+}
+
 TEST(FlowSolver, TheSteppedSolidsFluxBalancesTheInventoryOfAnOpenColumn) {
   // A fed column (ε_s = 0.3 coming in at 5 cm/s into 0.1, a pressure outlet at the top), a loose
   // outer tolerance so that the converged iterate still carries a visible continuity residual:

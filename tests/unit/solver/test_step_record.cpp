@@ -74,6 +74,22 @@ TEST(MomentumResidual, ForceNormalizesByTheForcesThatAct) {
   EXPECT_EQ(value_of(residual, {{1.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0}}), 0.0);
 }
 
+TEST(MomentumResidual, MfixNormalizesByDiagonalTimesSpeedOverTheRowsItCounts) {
+  // MFIX's CALC_RESID_U: Σ|s − Lu| over Σ |A_e| |u| of the counted rows; a row MFIX skips (at
+  // rest, or dilute solids) is in neither sum, however large its residual.
+  std::vector<Row> rows = two_rows;
+  rows[0].mfix_scale = 3.0;
+  rows[1].mfix_scale = 5.0;
+  const MomentumResidual residual(ResidualNormalization::mfix, 0.5, 2.0, 0.01);
+  EXPECT_NEAR(value_of(residual, rows), 0.8 / 8.0, 1e-15);
+  Row skipped{1.0, 0.0, 1.0, 100.0, 0.0, 0.0};
+  skipped.mfix_counted = false;
+  rows.push_back(skipped);
+  std::vector<double> each;
+  EXPECT_NEAR(value_of(residual, rows, &each), 0.8 / 8.0, 1e-15);
+  EXPECT_EQ(each.back(), 0.0);
+}
+
 TEST(MomentumResidual, NetForceMakesTheValueAtLeastTheNetOverTheWeight) {
   // Three rows each leaving +0.1 N, each weighing 0.2 N, against huge diagonals: the sum of
   // magnitudes is negligible against Σ A U, the net force is half the weight.

@@ -111,12 +111,13 @@ StepResult FlowSolver::advance(run::FlowState& state, const run::FlowState& old,
       } else if (!mfix) {
         value = imbalance / std::max(throughput, least_throughput);
       } else {
-        // Until an iteration's imbalance is above the floor it becomes the reference (1).
+        // The first imbalance above the floor becomes the step's reference (its value 1); it
+        // is kept for the rest of the step, whatever the floor does as the velocity scale grows.
         const double floor = mfix_least_imbalance * least_throughput;
         double& first = first_imbalance[static_cast<std::size_t>(c)];
         if (imbalance <= floor) {
           value = 0.0;
-        } else if (iteration > 1 && first > floor) {
+        } else if (first > 0.0) {
           value = imbalance / first;
         } else {
           first = imbalance;
@@ -132,7 +133,8 @@ StepResult FlowSolver::advance(run::FlowState& state, const run::FlowState& old,
     for (int i = 0; i < intervention_count; ++i)
       result.interventions[static_cast<std::size_t>(i)] += sums.interventions[static_cast<std::size_t>(i)];
     const double largest = mfix ? mfix_sum(result.residuals) : result.residuals.largest();
-    if (iteration == 1) result.first_largest = largest;
+    result.judged = largest;
+    if (iteration == 1) result.first_largest = result.residuals.largest();
     if (trace) {
       const auto where = worst_cell(result.residuals.worst());  // collective
       if (comm.is_root()) {

@@ -59,7 +59,7 @@ MomentumPredictor::MomentumPredictor(const deck::Deck& deck, const Discretizatio
     for (const Phase phase : {gas, solids}) {
       // A solids row where there are no solids is an identity row: solved directly.
       krylov.solve_decoupled_rows_directly = phase == solids;
-      if (settings.moves[phase])
+      if (settings.moves[phase] && !(phase == solids && settings.coupled_solids_momentum))
         m_systems[phase][static_cast<std::size_t>(d)] = std::make_unique<LinearSystem>(
             comm, pattern, n.first_row, prefixes[phase][d], krylov);
     }
@@ -148,22 +148,30 @@ bool MomentumPredictor::predict(int d, const Inputs& in, run::FlowState& state,
     const double R_g = g ? g->b + g->neighbours_u : 0.0, R_s = s ? s->b + s->neighbours_u : 0.0;
 
     // The row's residual at the current iterate, with the drag on the other phase's velocity.
-    auto add_residual = [&](Phase phase, const MomentumRow& row, double A, double u, double u_other) {
-      double mfix_scale = 0.0;
+    // Under "mfix" it is the residual of the row after the drag's partial elimination, as MFIX's
+    // CALC_RESID_U sees it: r + (βV/A_o) r_o with r_o the other phase's row residual, over
+    // |A − (βV)²/A_o| times the speed at the row's cell.
+    auto add_residual = [&](Phase phase, const MomentumRow& row, double A, double u, double u_other,
+                            const MomentumRow* other_row, double A_other) {
+      double mfix_scale = 0.0, eliminated_part = 0.0;
       bool mfix_counted = true;
       if (settings.residual_normalization == ResidualNormalization::mfix) {
-        // MFIX's CALC_RESID_U: the eliminated diagonal times the speed at the row's cell.
         const auto& v = phase == gas ? state.gas_velocity : state.solids_velocity;
         const double speed = std::sqrt(v[0][ul] * v[0][ul] + v[1][ul] * v[1][ul] + v[2][ul] * v[2][ul]);
-        const double other = phase == gas ? A_s : A_g;
-        const double eliminated = other > 0.0 ? A - beta_v * beta_v / other : A;
+        double eliminated = A;
+        if (other_row && A_other > 0.0) {
+          eliminated -= beta_v * beta_v / A_other;
+          const double other_residual =
+              other_row->b + beta_v * u + other_row->neighbours_u - A_other * u_other;
+          eliminated_part = beta_v / A_other * other_residual;
+        }
         mfix_scale = std::abs(eliminated) * speed;
         mfix_counted = speed > mfix_least_speed && (phase == gas || row.fraction > mfix_dilute_fraction);
       }
       const double row_residual = residual[phase].add(
           phase == gas ? gas_sums : solids_sums,
           {.diagonal = A, .operator_u = A * u - row.neighbours_u,
-           .operator_one = A - row.neighbours_a, .source = row.b + beta_v * u_other,
+           .operator_one = A - row.neighbours_a, .source = row.b + beta_v * u_other + eliminated_part,
            .transient = row.transient, .weight = row.weight,
            .force = row.force + std::abs(beta_v * (u_other - u)),
            .mfix_scale = mfix_scale, .mfix_counted = mfix_counted});
@@ -171,7 +179,7 @@ bool MomentumPredictor::predict(int d, const Inputs& in, run::FlowState& state,
     };
 
     if (g) {
-      add_residual(gas, *g, A_g, u_g[ul], u_s[ul]);
+      add_residual(gas, *g, A_g, u_g[ul], u_s[ul], s, A_s);
       double diagonal = A_g, rhs = g->b;
       if (s) {
         diagonal -= beta_v * beta_v / A_s;
@@ -191,7 +199,7 @@ bool MomentumPredictor::predict(int d, const Inputs& in, run::FlowState& state,
       MomentumRow& row = rows[solids][r];
       double diagonal = 1.0, rhs = 0.0;
       if (s) {
-        add_residual(solids, *s, A_s, u_s[ul], u_g[ul]);
+        add_residual(solids, *s, A_s, u_s[ul], u_g[ul], g, A_g);
         diagonal = A_s;
         rhs = s->b;
         if (g) {

@@ -130,6 +130,9 @@ struct StepResult {
   int iterations = 0;
   Residuals residuals;  // of the last outer iteration
   double first_largest = 0.0;  // the largest residual of the first outer iteration
+  // What the last outer iteration was judged by against numerics.tolerance: the largest
+  // normalized residual, or under numerics.residual_normalization = "mfix" their sum.
+  double judged = 0.0;
   // "diverged" when a residual became non-finite or the largest grew over the step's outer
   // iterations; "stalled" when it fell but not below the tolerance.
   bool diverged() const;

@@ -96,8 +96,10 @@ RunSummary run_time_loop(const TimeLoopContext& context, FlowSolver& flow, run::
       const double dt = controller.dt();
       const std::string why =
           result.failure.empty()
-              ? fmt::format("largest residual {:.3g} after {} outer iterations{}",
-                            result.residuals.largest(), result.iterations,
+              ? fmt::format("{} {:.3g} after {} outer iterations{}",
+                            context.deck.numerics.residual_normalization == "mfix" ? "residual sum"
+                                                                                    : "largest residual",
+                            result.judged, result.iterations,
                             result.stalled ? ", stalled (numerics.detect_stall)" : "")
               : fmt::format("{} in outer iteration {}", result.failure, result.iterations);
       context.log(fmt::format("t = {:.6g} s: step not converged ({}); dt -> {:.3g} s, step redone",

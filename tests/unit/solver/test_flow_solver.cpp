@@ -99,6 +99,7 @@ TEST(FlowSolver, TheMfixTestJudgesTheSumWithContinuityAgainstTheFirstIteration) 
   double sum = 0.0;
   for (int e = 0; e <= solver::solids_continuity; ++e) sum += result.residuals.value[static_cast<std::size_t>(e)];
   EXPECT_LE(sum, 1e-3);
+  EXPECT_DOUBLE_EQ(result.judged, sum);  // what the step was judged by, for the run log
   EXPECT_GT(result.residuals.value[solver::mixture_continuity] + result.residuals.value[solver::solids_continuity], 0.0);
 }
 

@@ -22,9 +22,9 @@
 namespace bagnold::tests {
 namespace {
 
-// X in a box with
-// no-slip walls across y and z, periodic along x, sliding along x at 5 cm/s under gravity
-// tilted along x: the walls shear it, and the cross part couples u_x and u_z near them.
+// A dense MKT bed (ε_s = 0.55) in a box with no-slip walls across y and z, periodic along x,
+// sliding along x at 5 cm/s under gravity tilted along x: the walls shear it, and the cross part
+// couples u_x with u_y and u_z near them.
 std::string sheared_bed(const std::string& solids_momentum) {
   return unit_deck(4, 4, 6, "\"x\"", -9.81,
                    two_fluid("mkt") + tight_linear_solves +
@@ -46,6 +46,29 @@ struct Step {
   solver::StepResult result;
 };
 
+// The solids momentum rows of a case for any velocity field, at the closures of its state
+// (evaluated once): what the assembly puts in each row at fixed μ_s.
+struct FixedClosures {
+  explicit FixedClosures(Case& of)
+      : c(of), fields(static_cast<std::size_t>(of.local_count())), carried(static_cast<std::size_t>(of.local_count())) {
+    solver::Closures closures(c.deck, c.disc);
+    closures.evaluate(c.disc, c.state, c.old, dt, fields);
+    solver::carry_all_fractions(c.disc, c.state, carried);
+  }
+  std::vector<solver::MomentumRow> rows(int d, const run::FlowState& state) const {
+    const solver::MomentumAssemblyInputs in{c.disc, c.settings, c.old, dt, fields, carried, no_source};
+    std::vector<solver::MomentumRow> out;
+    solver::PairViscosities scratch;
+    solver::assemble_momentum_rows(in, solver::solids, d, state, nullptr, true, out, scratch);
+    return out;
+  }
+  static constexpr double dt = 1e-3;  // [s]
+  Case& c;
+  solver::ClosureFields fields;
+  solver::CarriedFractions carried;
+  std::array<std::vector<double>, 3> no_source;
+};
+
 // The cross entries a row records are its cross part: with u_x = 0 everywhere (no convection of
 // x momentum) and u_y, u_z linear in x, the x rows' b changes by exactly Σ c u_e when u_y and
 // u_z are switched off at fixed closures.
@@ -53,23 +76,11 @@ TEST(CoupledSolidsMomentum, CrossEntriesAreTheRowsCrossPart) {
   Case c(unit_deck(5, 5, 5, "", 0.0, two_fluid("mkt", false)));
   const double G[3][3] = {{0.0, 0.0, 0.0}, {3.0, 0.0, 0.0}, {5.0, 0.0, 0.0}};
   set_linear_solids(c, 0.55, G);
-  solver::ClosureFields fields(static_cast<std::size_t>(c.local_count()));
-  solver::Closures closures(c.deck, c.disc);
-  closures.evaluate(c.disc, c.state, c.old, 1e-3, fields);
-  solver::CarriedFractions carried(static_cast<std::size_t>(c.local_count()));
-  solver::carry_all_fractions(c.disc, c.state, carried);
-  const std::array<std::vector<double>, 3> no_source;
-  auto rows = [&](const run::FlowState& state) {
-    const solver::MomentumAssemblyInputs in{c.disc, c.settings, c.old, 1e-3, fields, carried, no_source};
-    std::vector<solver::MomentumRow> out;
-    solver::PairViscosities scratch;
-    solver::assemble_momentum_rows(in, solver::solids, 0, state, nullptr, true, out, scratch);
-    return out;
-  };
+  const FixedClosures fixed(c);
   run::FlowState still = c.state;
   for (const int e : {1, 2}) std::fill(still.solids_velocity[static_cast<std::size_t>(e)].begin(),
                                        still.solids_velocity[static_cast<std::size_t>(e)].end(), 0.0);
-  const auto moving = rows(c.state), resting = rows(still);
+  const auto moving = fixed.rows(0, c.state), resting = fixed.rows(0, still);
   double worst = 0.0, size = 0.0;
   for (std::size_t r = 0; r < moving.size(); ++r) {
     double cross = 0.0;
@@ -92,18 +103,9 @@ TEST(CoupledSolidsMomentum, OneSolveHoldsTheRowsWithTheCrossPartAtTheSolution) {
   Case c(unit_deck(5, 4, 6, "", 0.0, two_fluid("mkt", false)));
   const double G[3][3] = {{1.0, 2.0, -3.0}, {4.0, -1.5, 2.5}, {-2.0, 3.0, 0.5}};
   set_linear_solids(c, 0.6, G);
-  solver::ClosureFields fields(static_cast<std::size_t>(c.local_count()));
-  solver::Closures closures(c.deck, c.disc);
-  closures.evaluate(c.disc, c.state, c.old, 1e-3, fields);
-  solver::CarriedFractions carried(static_cast<std::size_t>(c.local_count()));
-  solver::carry_all_fractions(c.disc, c.state, carried);
-  const std::array<std::vector<double>, 3> no_source;
-  const solver::MomentumAssemblyInputs in{c.disc, c.settings, c.old, 1e-3, fields, carried, no_source};
+  const FixedClosures fixed(c);
   std::array<std::vector<solver::MomentumRow>, 3> rows;
-  solver::PairViscosities scratch;
-  for (int d = 0; d < 3; ++d)
-    solver::assemble_momentum_rows(in, solver::solids, d, c.state, nullptr, true,
-                                   rows[static_cast<std::size_t>(d)], scratch);
+  for (int d = 0; d < 3; ++d) rows[static_cast<std::size_t>(d)] = fixed.rows(d, c.state);
   solver::KrylovSettings krylov;
   krylov.pc_type = "jacobi";
   krylov.relative_tolerance = 1e-13;

@@ -27,6 +27,15 @@ double mfix_sum(const Residuals& residuals) {
   for (int e = 0; e <= solids_continuity; ++e) sum += residuals.value[static_cast<std::size_t>(e)];
   return std::max(sum, residuals.value[granular_energy]);
 }
+
+// MFIX's continuity residual: the imbalance against the step's first one above `floor` (which
+// becomes `first`, value 1, and is kept for the step); none below the floor.
+double relative_to_first(double imbalance, double floor, double& first) {
+  if (imbalance <= floor) return 0.0;
+  if (first > 0.0) return imbalance / first;
+  first = imbalance;
+  return 1.0;
+}
 }  // namespace
 
 bool FlowSolver::iterate(run::FlowState& state, const run::FlowState& old, double dt, bool first,
@@ -105,26 +114,11 @@ StepResult FlowSolver::advance(run::FlowState& state, const run::FlowState& old,
     for (int c = 0; c < 2; ++c) {
       const auto& [imbalance, throughput] = sums.continuity[static_cast<std::size_t>(c)];
       const bool solved = c == 0 ? m_pressure != nullptr : m_fraction != nullptr;
-      double value = 0.0;
-      if (!solved || imbalance <= 1e-300) {
-        value = 0.0;
-      } else if (!mfix) {
-        value = imbalance / std::max(throughput, least_throughput);
-      } else {
-        // The first imbalance above the floor becomes the step's reference (its value 1); it
-        // is kept for the rest of the step, whatever the floor does as the velocity scale grows.
-        const double floor = mfix_least_imbalance * least_throughput;
-        double& first = first_imbalance[static_cast<std::size_t>(c)];
-        if (imbalance <= floor) {
-          value = 0.0;
-        } else if (first > 0.0) {
-          value = imbalance / first;
-        } else {
-          first = imbalance;
-          value = 1.0;
-        }
-      }
-      result.residuals.value[static_cast<std::size_t>(mixture_continuity + c)] = value;
+      result.residuals.value[static_cast<std::size_t>(mixture_continuity + c)] =
+          !solved || imbalance <= 1e-300 ? 0.0
+          : mfix ? relative_to_first(imbalance, mfix_least_imbalance * least_throughput,
+                                     first_imbalance[static_cast<std::size_t>(c)])
+                 : imbalance / std::max(throughput, least_throughput);
     }
     const auto& [energy_imbalance, energy_scale] = sums.energy;
     result.residuals.value[granular_energy] =

@@ -29,35 +29,28 @@ CoupledSolidsMomentum::CoupledSolidsMomentum(const Discretization& discretizatio
                                              const KrylovSettings& krylov)
     : m_discretization(discretization) {
   const auto& layout = discretization.layout();
-  const MPI_Comm comm = layout.comm().get();
-  int ranks = 1;
-  MPI_Comm_size(comm, &ranks);
-  const auto size = static_cast<std::size_t>(ranks);
-  std::int64_t mine[6];
-  for (int d = 0; d < 3; ++d) {
-    const auto& numbering = discretization.velocity_numbering(d);
-    mine[d] = numbering.first_row;
-    mine[3 + d] = numbering.owned_rows();
+  const auto& comm = layout.comm();
+  const auto ranks = static_cast<std::size_t>(comm.size());
+  // Each component's rows are numbered contiguously in rank order (UnknownNumbering), so its
+  // first row on a rank is the sum of the earlier ranks' counts.
+  for (std::size_t d = 0; d < 3; ++d) {
+    m_component_rows[d] = comm.all_gather(discretization.velocity_numbering(static_cast<int>(d)).owned_rows());
+    m_component_first[d].assign(ranks, 0);
+    for (std::size_t q = 1; q < ranks; ++q)
+      m_component_first[d][q] = m_component_first[d][q - 1] + m_component_rows[d][q - 1];
   }
-  std::vector<std::int64_t> all(6 * size);
-  MPI_Allgather(mine, 6, MPI_INT64_T, all.data(), 6, MPI_INT64_T, comm);
-  m_rank_first.assign(size, 0);
-  for (int d = 0; d < 3; ++d) {
-    m_component_first[static_cast<std::size_t>(d)].resize(size);
-    m_component_rows[static_cast<std::size_t>(d)].resize(size);
+  m_rank_first.assign(ranks, 0);
+  for (std::size_t q = 1; q < ranks; ++q)
+    for (std::size_t d = 0; d < 3; ++d) m_rank_first[q] += m_component_first[d][q];
+  const auto rank = static_cast<std::size_t>(comm.rank());
+  for (std::size_t d = 1; d < 3; ++d) m_offset[d] = m_offset[d - 1] + m_component_rows[d - 1][rank];
+  // Every stored face's coupled row, once: set_row looks them up per outer iteration.
+  for (int e = 0; e < 3; ++e) {
+    const auto& global = discretization.velocity_numbering(e).global;
+    auto& rows = m_index[static_cast<std::size_t>(e)];
+    rows.resize(global.size());
+    for (std::size_t l = 0; l < global.size(); ++l) rows[l] = global[l] >= 0 ? coupled(e, global[l]) : -1;
   }
-  std::int64_t next = 0;
-  for (std::size_t q = 0; q < size; ++q) {
-    m_rank_first[q] = next;
-    for (std::size_t d = 0; d < 3; ++d) {
-      m_component_first[d][q] = all[6 * q + d];
-      m_component_rows[d][q] = all[6 * q + 3 + d];
-      next += all[6 * q + 3 + d];
-    }
-  }
-  int rank = 0;
-  MPI_Comm_rank(comm, &rank);
-  for (std::size_t d = 1; d < 3; ++d) m_offset[d] = m_offset[d - 1] + mine[3 + d - 1];
 
   for (int d = 0; d < 3; ++d) {
     const auto& numbering = discretization.velocity_numbering(d);
@@ -67,15 +60,13 @@ CoupledSolidsMomentum::CoupledSolidsMomentum(const Discretization& discretizatio
       for (auto k = own.offsets[r]; k < own.offsets[r + 1]; ++k)
         columns.push_back(coupled(d, own.columns[static_cast<std::size_t>(k)]));
       for_each_cross_cell(layout, numbering.owned_locals[r], d, [&](int e, int cell) {
-        if (cell < 0) return;
-        const std::int64_t g = discretization.velocity_numbering(e).global[static_cast<std::size_t>(cell)];
-        if (g >= 0) columns.push_back(coupled(e, g));
+        const std::int64_t column = coupled_at(e, cell);
+        if (column >= 0) columns.push_back(column);
       });
       m_pattern.add_row(columns.data(), static_cast<int>(columns.size()));
     }
   }
-  m_system = std::make_unique<LinearSystem>(comm, m_pattern, m_rank_first[static_cast<std::size_t>(rank)],
-                                            "solids_momentum_", krylov);
+  m_system = std::make_unique<LinearSystem>(comm.get(), m_pattern, m_rank_first[rank], "solids_momentum_", krylov);
   m_x.resize(static_cast<std::size_t>(m_pattern.rows()));
 }
 
@@ -85,6 +76,10 @@ std::int64_t CoupledSolidsMomentum::coupled(int e, std::int64_t g) const {
   std::int64_t row = m_rank_first[q];
   for (std::size_t d = 0; d < static_cast<std::size_t>(e); ++d) row += m_component_rows[d][q];
   return row + (g - first[q]);
+}
+
+std::int64_t CoupledSolidsMomentum::coupled_at(int e, int cell) const {
+  return cell >= 0 ? m_index[static_cast<std::size_t>(e)][static_cast<std::size_t>(cell)] : -1;
 }
 
 void CoupledSolidsMomentum::set_row(int d, std::size_t r, const MomentumRow& row, double diagonal,
@@ -97,28 +92,26 @@ void CoupledSolidsMomentum::set_row(int d, std::size_t r, const MomentumRow& row
     m_columns.push_back(coupled(d, row.columns[k]));
     m_values.push_back(row.active ? row.values[k] : 0.0);
   }
-  m_columns.push_back(coupled(d, numbering.global[ul]));
+  m_columns.push_back(coupled_at(d, static_cast<int>(ul)));
   m_values.push_back(diagonal);
   // Every column of the pattern is written each time (set_row keeps what it is not given).
   for_each_cross_cell(m_discretization.layout(), static_cast<int>(ul), d, [&](int e, int cell) {
-    if (cell < 0) return;
-    const std::int64_t g = m_discretization.velocity_numbering(e).global[static_cast<std::size_t>(cell)];
-    if (g < 0) return;
-    m_columns.push_back(coupled(e, g));
+    const std::int64_t column = coupled_at(e, cell);
+    if (column < 0) return;
+    m_columns.push_back(column);
     m_values.push_back(0.0);
   });
   if (row.active)
     for (int k = 0; k < row.cross_count; ++k) {
       const int e = row.cross_component[k];
-      const auto cell = static_cast<std::size_t>(row.cross_cell[k]);
-      const std::int64_t g = m_discretization.velocity_numbering(e).global[cell];
-      if (g < 0) continue;  // a given velocity: it stays on the right-hand side
-      m_columns.push_back(coupled(e, g));
+      const std::int64_t column = coupled_at(e, row.cross_cell[k]);
+      if (column < 0) continue;  // a given velocity: it stays on the right-hand side
+      m_columns.push_back(column);
       m_values.push_back(-row.cross_coefficient[k]);
-      rhs -= row.cross_coefficient[k] * velocity[static_cast<std::size_t>(e)][cell];
+      rhs -= row.cross_coefficient[k] * velocity[static_cast<std::size_t>(e)][static_cast<std::size_t>(row.cross_cell[k])];
     }
-  const std::int64_t global = coupled(d, numbering.global[ul]);
-  m_system->set_row(global, m_columns.data(), m_values.data(), static_cast<int>(m_columns.size()), rhs);
+  m_system->set_row(coupled_at(d, static_cast<int>(ul)), m_columns.data(), m_values.data(),
+                    static_cast<int>(m_columns.size()), rhs);
   m_x[static_cast<std::size_t>(m_offset[static_cast<std::size_t>(d)]) + r] = row.active ? velocity[static_cast<std::size_t>(d)][ul] : 0.0;
 }
 

@@ -43,12 +43,15 @@ class CoupledSolidsMomentum {
  private:
   // The coupled global row of component e's unknown with global index g (of e's numbering).
   std::int64_t coupled(int e, std::int64_t g) const;
+  // The same of the e-face stored at a local cell (owned or halo); -1 for none or cell < 0.
+  std::int64_t coupled_at(int e, int cell) const;
 
   const Discretization& m_discretization;
   // Per rank: its first coupled row, and per component its first row and row count.
   std::vector<std::int64_t> m_rank_first;
   std::array<std::vector<std::int64_t>, 3> m_component_first, m_component_rows;
   std::array<std::int64_t, 3> m_offset{};  // this rank's first row of each component, 0-based
+  std::array<std::vector<std::int64_t>, 3> m_index;  // per component and local cell: coupled_at
   SparsityPattern m_pattern;
   std::unique_ptr<LinearSystem> m_system;
   std::vector<double> m_x;

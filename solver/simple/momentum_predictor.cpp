@@ -119,6 +119,7 @@ bool MomentumPredictor::predict(int d, const Inputs& in, run::FlowState& state,
     }
   }
   const double least_speed = settings.least_speed;
+  const bool mfix_norm = settings.residual_normalization == ResidualNormalization::mfix;
   std::array<MomentumResidual, 2> residual;
   for (const Phase phase : {gas, solids}) {
     residual[phase] = MomentumResidual(settings.residual_normalization, mean[phase], in.velocity_scale,
@@ -155,7 +156,7 @@ bool MomentumPredictor::predict(int d, const Inputs& in, run::FlowState& state,
                             const MomentumRow* other_row, double A_other) {
       double mfix_scale = 0.0, eliminated_part = 0.0;
       bool mfix_counted = true;
-      if (settings.residual_normalization == ResidualNormalization::mfix) {
+      if (mfix_norm) {
         const auto& v = phase == gas ? state.gas_velocity : state.solids_velocity;
         const double speed = std::sqrt(v[0][ul] * v[0][ul] + v[1][ul] * v[1][ul] + v[2][ul] * v[2][ul]);
         double eliminated = A;

@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "solver/petsc/busy_segments.hpp"
 #include "solver/petsc/work_clock.hpp"
 
 namespace bagnold::solver {
@@ -39,7 +40,7 @@ LinearSystem::LinearSystem(MPI_Comm comm, SparsityPattern pattern_in, std::int64
                            const std::string& prefix, const KrylovSettings& settings)
     : m_comm(comm), m_rows(pattern_in.rows()), m_first_row(first_row), m_pattern(std::move(pattern_in)),
       m_values(m_pattern.columns.size(), 0.0), m_rhs_values(static_cast<std::size_t>(m_rows), 0.0),
-      m_prefix(prefix), m_settings(settings) {
+      m_prefix(prefix), m_settings(settings), m_segment(next_system_segment()) {
   const SparsityPattern& pattern = m_pattern;
   const auto n = static_cast<PetscInt>(m_rows);
   petsc_check(MatCreate(comm, m_matrix.out()), "MatCreate");
@@ -111,6 +112,11 @@ void LinearSystem::keep_preconditioner() {
 void LinearSystem::renew_preconditioner() { create_ksp(); }
 
 SolveReport LinearSystem::solve(std::vector<double>& x) {
+  // The busy segment since the last mark ends with this solve, on every return path.
+  struct SegmentEnd {
+    int key;
+    ~SegmentEnd() { end_busy_segment(key); }
+  } const segment_end{m_segment};
   petsc_check(MatSetValuesCOO(m_matrix.get(), m_values.data(), INSERT_VALUES), "MatSetValuesCOO");
   PetscScalar* rhs = nullptr;
   petsc_check(VecGetArray(m_rhs.get(), &rhs), "VecGetArray");

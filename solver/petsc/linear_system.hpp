@@ -82,6 +82,7 @@ class LinearSystem {
   std::vector<double> m_rhs_values;
   std::string m_prefix;
   KrylovSettings m_settings;
+  int m_segment;  // this system's busy segment (busy_segments.hpp)
   PetscMat m_matrix;
   PetscVec m_rhs, m_solution;
   PetscKsp m_ksp;

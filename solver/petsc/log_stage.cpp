@@ -3,6 +3,8 @@
 
 #include <array>
 
+#include "solver/petsc/busy_segments.hpp"
+
 namespace bagnold::solver {
 
 namespace {
@@ -17,7 +19,10 @@ PetscLogStage stage_id(Stage stage) {
 }
 }  // namespace
 
-ScopedStage::ScopedStage(Stage stage) { PetscLogStagePush(stage_id(stage)); }
-ScopedStage::~ScopedStage() { PetscLogStagePop(); }
+ScopedStage::ScopedStage(Stage stage) : m_stage(stage) { PetscLogStagePush(stage_id(stage)); }
+ScopedStage::~ScopedStage() {
+  PetscLogStagePop();
+  end_busy_segment(stage_segment_base + static_cast<int>(m_stage));
+}
 
 }  // namespace bagnold::solver

@@ -1,6 +1,7 @@
 #pragma once
 // PETSc log stages for the phases of the outer iteration, so that `-log_view` splits the time
-// of a run by phase: a ScopedStage pushes its stage for its lifetime.
+// of a run by phase: a ScopedStage pushes its stage for its lifetime, and ends a busy segment
+// when it ends (busy_segments.hpp).
 
 #include <petscsys.h>
 
@@ -14,6 +15,9 @@ class ScopedStage {
   ~ScopedStage();
   ScopedStage(const ScopedStage&) = delete;
   ScopedStage& operator=(const ScopedStage&) = delete;
+
+ private:
+  Stage m_stage;
 };
 
 }  // namespace bagnold::solver

@@ -3,6 +3,7 @@
 
 #include <mpi.h>
 
+#include "solver/petsc/busy_segments.hpp"
 #include "src/parallel/mpi_wait_clock.hpp"
 
 namespace bagnold::solver {
@@ -14,7 +15,9 @@ WorkSeconds totals;
 WorkSeconds work_seconds() { return totals; }
 
 ScopedWorkClock::ScopedWorkClock(Kind kind)
-    : m_kind(kind), m_start(MPI_Wtime()), m_wait_start(parallel::mpi_wait_seconds()) {}
+    : m_kind(kind), m_start(MPI_Wtime()), m_wait_start(parallel::mpi_wait_seconds()) {
+  if (kind == step) restart_busy_segment();
+}
 
 ScopedWorkClock::~ScopedWorkClock() {
   const double elapsed = MPI_Wtime() - m_start;
@@ -24,6 +27,7 @@ ScopedWorkClock::~ScopedWorkClock() {
   }
   totals.steps += elapsed;
   totals.waits += parallel::mpi_wait_seconds() - m_wait_start;
+  end_busy_segment(step_end_segment);
 }
 
 }  // namespace bagnold::solver

@@ -15,7 +15,7 @@ struct WorkSeconds {
 WorkSeconds work_seconds();
 
 // Adds its lifetime to WorkSeconds::steps (and the MPI waits within it to ::waits) or ::solves.
-// Steps do not nest.
+// Steps do not nest; a step starts and ends the busy segments (busy_segments.hpp).
 class ScopedWorkClock {
  public:
   enum Kind { step, solve };

@@ -6,6 +6,7 @@
 
 #include "src/app/run_log.hpp"
 #include "src/app/time_step_controller.hpp"
+#include "solver/petsc/busy_segments.hpp"
 #include "solver/petsc/work_clock.hpp"
 #include "solver/simple/face_fractions.hpp"
 #include "src/io/agree.hpp"
@@ -18,7 +19,8 @@ namespace bagnold::app {
 run::RankCounters rank_counters(const parallel::Domain& domain, const run::FlowState& state) {
   const auto work = solver::work_seconds();
   return run::count_rank(domain.layout, state, solver::solids_threshold,
-                         {work.steps - work.solves, work.solves, work.waits});
+                         {work.steps - work.solves, work.solves, work.waits},
+                         solver::busy_segment_seconds());
 }
 
 std::vector<std::string> monitor_columns(const deck::Deck& deck, const parallel::Domain& domain) {

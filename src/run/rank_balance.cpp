@@ -7,20 +7,28 @@
 
 #include <algorithm>
 #include <array>
+#include <utility>
+#include <vector>
 
 namespace bagnold::run {
 
 namespace {
 
-constexpr int counter_count = 6;
+constexpr std::size_t counter_count = 6;  // before the busy segments
 
-std::array<double, counter_count> pack(const RankCounters& c) {
-  return {c.owned_cells, c.fluid_cells, c.solids_cells, c.seconds.assembly, c.seconds.solves,
-          c.seconds.waits};
+// The counters, then the busy segments padded with zeros to `segments`.
+std::vector<double> pack(const RankCounters& c, std::size_t segments) {
+  std::vector<double> v = {c.owned_cells, c.fluid_cells, c.solids_cells, c.seconds.assembly,
+                           c.seconds.solves, c.seconds.waits};
+  v.insert(v.end(), c.busy_segments.begin(), c.busy_segments.end());
+  v.resize(counter_count + segments, 0.0);
+  return v;
 }
 
-RankCounters unpack(const double* v) {
-  return {v[0], v[1], v[2], RankSeconds{v[3], v[4], v[5]}};
+RankCounters unpack(const double* v, std::size_t segments) {
+  RankCounters c{v[0], v[1], v[2], RankSeconds{v[3], v[4], v[5]}, {}};
+  c.busy_segments.assign(v + counter_count, v + counter_count + segments);
+  return c;
 }
 
 // max/min of one counter over the ranks, as text: "inf" when the smallest is 0 and the largest not.
@@ -60,38 +68,62 @@ double RankCounters::wait_share() const {
   return busy > 0.0 ? seconds.waits / busy : 0.0;
 }
 
+std::vector<double> imbalance_wait_shares(const std::vector<RankCounters>& ranks) {
+  std::size_t segments = 0;
+  for (const auto& r : ranks) segments = std::max(segments, r.busy_segments.size());
+  auto busy = [](const RankCounters& r, std::size_t k) {
+    return k < r.busy_segments.size() ? r.busy_segments[k] : 0.0;
+  };
+  double busiest_total = 0.0;
+  std::vector<double> waits(ranks.size(), 0.0);
+  for (std::size_t k = 0; k < segments; ++k) {
+    double busiest = 0.0;
+    for (const auto& r : ranks) busiest = std::max(busiest, busy(r, k));
+    busiest_total += busiest;
+    for (std::size_t r = 0; r < ranks.size(); ++r) waits[r] += busiest - busy(ranks[r], k);
+  }
+  for (auto& w : waits) w = busiest_total > 0.0 ? w / busiest_total : 0.0;
+  return waits;
+}
+
 RankCounters count_rank(const parallel::Layout& layout, const FlowState& state,
-                        double solids_threshold, const RankSeconds& seconds) {
+                        double solids_threshold, const RankSeconds& seconds,
+                        std::vector<double> busy_segments) {
   RankCounters c;
   c.owned_cells = layout.owned_count();
   c.fluid_cells = layout.owned_fluid_count();
   for (int l = 0; l < layout.owned_fluid_count(); ++l)
     if (state.solids_fraction[static_cast<std::size_t>(l)] > solids_threshold) c.solids_cells += 1.0;
   c.seconds = seconds;
+  c.busy_segments = std::move(busy_segments);
   return c;
 }
 
 std::vector<RankCounters> gather_rank_counters(const parallel::Communicator& comm,
                                                const RankCounters& mine) {
-  const auto packed = pack(mine);
-  std::vector<double> all(static_cast<std::size_t>(comm.size()) * counter_count);
-  MPI_Allgather(packed.data(), counter_count, MPI_DOUBLE, all.data(), counter_count, MPI_DOUBLE,
-                comm.get());
+  unsigned long segments = mine.busy_segments.size();
+  MPI_Allreduce(MPI_IN_PLACE, &segments, 1, MPI_UNSIGNED_LONG, MPI_MAX, comm.get());
+  const auto packed = pack(mine, segments);
+  const int count = static_cast<int>(packed.size());
+  std::vector<double> all(static_cast<std::size_t>(comm.size()) * packed.size());
+  MPI_Allgather(packed.data(), count, MPI_DOUBLE, all.data(), count, MPI_DOUBLE, comm.get());
   std::vector<RankCounters> ranks;
   for (int r = 0; r < comm.size(); ++r)
-    ranks.push_back(unpack(all.data() + static_cast<std::size_t>(r) * counter_count));
+    ranks.push_back(unpack(all.data() + static_cast<std::size_t>(r) * packed.size(), segments));
   return ranks;
 }
 
 std::string rank_balance_table(const std::vector<RankCounters>& ranks) {
-  std::string text = fmt::format("{:>8} {:>10} {:>10} {:>10} {:>12} {:>10} {:>10} {:>6}\n", "rank",
-                                 "cells", "fluid", "solids", "assembly/s", "solves/s", "wait/s",
-                                 "wait%");
+  const auto imbalance = imbalance_wait_shares(ranks);
+  std::string text = fmt::format("{:>8} {:>10} {:>10} {:>10} {:>12} {:>10} {:>10} {:>6} {:>11}\n",
+                                 "rank", "cells", "fluid", "solids", "assembly/s", "solves/s",
+                                 "wait/s", "wait%", "imbalance%");
   for (std::size_t r = 0; r < ranks.size(); ++r) {
     const auto& c = ranks[r];
-    text += fmt::format("{:>8} {:>10.0f} {:>10.0f} {:>10.0f} {:>12.2f} {:>10.2f} {:>10.2f} {:>6.1f}\n",
+    text += fmt::format("{:>8} {:>10.0f} {:>10.0f} {:>10.0f} {:>12.2f} {:>10.2f} {:>10.2f} {:>6.1f} {:>11.1f}\n",
                         r, c.owned_cells, c.fluid_cells, c.solids_cells, c.seconds.assembly,
-                        c.seconds.solves, c.seconds.waits, 100.0 * c.wait_share());
+                        c.seconds.solves, c.seconds.waits, 100.0 * c.wait_share(),
+                        100.0 * imbalance[r]);
   }
   text += fmt::format("{:>8} {:>10} {:>10} {:>10} {:>12} {:>10} {:>10}\n", "max/min",
                       ratio(ranks, owned), ratio(ranks, fluid), ratio(ranks, solids),
@@ -106,11 +138,18 @@ std::string rank_balance_line(const std::vector<RankCounters>& ranks) {
     least = std::min(least, r.wait_share());
     most = std::max(most, r.wait_share());
   }
+  const auto imbalance = imbalance_wait_shares(ranks);
+  double fewest = 0.0, most_imbalance = 0.0;
+  if (!imbalance.empty()) {
+    fewest = *std::min_element(imbalance.begin(), imbalance.end());
+    most_imbalance = *std::max_element(imbalance.begin(), imbalance.end());
+  }
   return fmt::format("ranks: fluid cells max/min {}, solids cells {}, assembly {}, solves {}; "
-                     "wait {:.1f}–{:.1f} %; work max {:.1f} % above the mean",
+                     "wait {:.1f}–{:.1f} %, from the imbalance {:.1f}–{:.1f} %; work max {:.1f} % "
+                     "above the mean",
                      ratio(ranks, fluid), ratio(ranks, solids), ratio(ranks, assembly),
-                     ratio(ranks, solves), 100.0 * least, 100.0 * most,
-                     100.0 * work_imbalance(ranks));
+                     ratio(ranks, solves), 100.0 * least, 100.0 * most, 100.0 * fewest,
+                     100.0 * most_imbalance, 100.0 * work_imbalance(ranks));
 }
 
 }  // namespace bagnold::run

@@ -2,9 +2,11 @@
 // How the work of a run is spread over the ranks, for the user: per rank the cells it owns, its
 // owned fluid cells, the owned fluid cells holding solids (ε_s above a threshold), and its wall
 // seconds in assembly (the time steps' outer iterations outside linear solves), in linear
-// solves, and waiting for other ranks in MPI during the time steps (part of the other two). The
-// counts are this rank's alone; gather_rank_counters is the one collective (an all-gather of a
-// few numbers), made only when the balance is shown.
+// solves, and waiting for other ranks in MPI during the time steps (part of the other two), and
+// its busy CPU seconds per segment of the time steps (solver/petsc/busy_segments.hpp), from
+// which the part of the waits that the partition causes is told from the part that the
+// machine's noise causes. The counts are this rank's alone; gather_rank_counters is the one
+// collective (an all-gather of a few numbers), made only when the balance is shown.
 
 #include <string>
 #include <vector>
@@ -25,15 +27,17 @@ struct RankCounters {
   double fluid_cells = 0.0;
   double solids_cells = 0.0;  // owned fluid cells with ε_s > the threshold
   RankSeconds seconds;
+  std::vector<double> busy_segments;  // busy CPU seconds per segment key
 
   // waits / (assembly + solves); 0 before any work.
   double wait_share() const;
 };
 
 // This rank's counters: its owned cells in `layout`, its cells with ε_s > `solids_threshold` in
-// `state`, and `seconds` as given.
+// `state`, and `seconds` and `busy_segments` as given.
 RankCounters count_rank(const parallel::Layout& layout, const FlowState& state,
-                        double solids_threshold, const RankSeconds& seconds);
+                        double solids_threshold, const RankSeconds& seconds,
+                        std::vector<double> busy_segments = {});
 // Every rank's, in rank order, on every rank. Collective.
 std::vector<RankCounters> gather_rank_counters(const parallel::Communicator& comm,
                                                const RankCounters& mine);
@@ -43,13 +47,18 @@ std::vector<RankCounters> gather_rank_counters(const parallel::Communicator& com
 // 0 for no ranks or no work.
 double work_imbalance(const std::vector<RankCounters>& ranks);
 
+// Per rank, the share of its time it would wait for the others on a machine of its own: per
+// segment the busiest rank's busy seconds less its own, summed over the segments, over the sum
+// of the busiest ranks' (0 for every rank without busy seconds).
+std::vector<double> imbalance_wait_shares(const std::vector<RankCounters>& ranks);
+
 // The table printed at the end of a run: a row per rank, then the max/min ratio of each column
 // ("inf" when the smallest is 0).
 std::string rank_balance_table(const std::vector<RankCounters>& ranks);
 // One line for the run log: the max/min ratios of fluid cells, solids cells, assembly and solve
-// seconds, the range of the ranks' wait shares and the work imbalance now ("ranks: fluid cells
-// max/min 1.00, solids cells 2.31, assembly 1.85, solves 1.10; wait 2.1–22.5 %; work max
-// 9.1 % above the mean").
+// seconds, the range of the ranks' wait shares and of their imbalance wait shares, and the work
+// imbalance now ("ranks: fluid cells max/min 1.00, solids cells 2.31, assembly 1.85, solves
+// 1.10; wait 2.1–22.5 %, from the imbalance 0.3–8.0 %; work max 9.1 % above the mean").
 std::string rank_balance_line(const std::vector<RankCounters>& ranks);
 
 }  // namespace bagnold::run

@@ -47,6 +47,17 @@ TEST(RankBalance, CountsEachRanksOwnCells) {
   EXPECT_EQ(solids, 48.0);
   EXPECT_EQ(owned, static_cast<double>(6 * 6 * 8)) << "every stored cell of the box is owned once";
   EXPECT_EQ(ranks[static_cast<std::size_t>(layout.comm().rank())].solids_cells, mine.solids_cells);
+
+  // Busy segments of different lengths (rank r marked r + 1 segments, each r + 1 s) arrive
+  // padded with zeros to the longest.
+  const int rank = layout.comm().rank(), size = layout.comm().size();
+  const auto with_segments = run::gather_rank_counters(
+      layout.comm(), run::count_rank(layout, box.state, 1e-6, {}, std::vector<double>(rank + 1, rank + 1.0)));
+  for (int r = 0; r < size; ++r) {
+    const auto& busy = with_segments[static_cast<std::size_t>(r)].busy_segments;
+    ASSERT_EQ(static_cast<int>(busy.size()), size);
+    for (int k = 0; k < size; ++k) EXPECT_EQ(busy[static_cast<std::size_t>(k)], k <= r ? r + 1.0 : 0.0);
+  }
 }
 
 TEST(RankBalance, ThresholdExcludesTraces) {
@@ -73,8 +84,8 @@ TEST(RankBalance, WorkImbalanceWeighsSolidsCellsAsThePartitionDoes) {
 }
 
 TEST(RankBalance, TableGivesMaxOverMin) {
-  const std::vector<run::RankCounters> ranks = {{10, 8, 0, {3.0, 1.0, 1.0}},
-                                                {12, 8, 4, {6.0, 2.0, 0.2}}};
+  const std::vector<run::RankCounters> ranks = {{10, 8, 0, {3.0, 1.0, 1.0}, {}},
+                                                {12, 8, 4, {6.0, 2.0, 0.2}, {}}};
   const auto table = run::rank_balance_table(ranks);
   EXPECT_NE(table.find("max/min       1.20       1.00        inf         2.00       2.00       5.00"),
             std::string::npos)
@@ -82,7 +93,31 @@ TEST(RankBalance, TableGivesMaxOverMin) {
   EXPECT_NE(table.find("25.0"), std::string::npos) << "rank 0 waits 1 s of 4\n" << table;
   EXPECT_EQ(run::rank_balance_line(ranks),
             "ranks: fluid cells max/min 1.00, solids cells inf, assembly 2.00, solves 2.00; "
-            "wait 2.5–25.0 %; work max 20.0 % above the mean");  // work 80 and 120
+            "wait 2.5–25.0 %, from the imbalance 0.0–0.0 %; work max 20.0 % above the mean");
+  // work 80 and 120; no busy segments
+}
+
+TEST(RankBalance, ImbalanceWaitIsTheBusiestRanksLeadPerSegment) {
+  // Segment 0: rank 1 busier by 1 s; segment 1: rank 0 busier by 2 s; segment 2 only on rank 0
+  // (rank 1 never marked it). The busiest ranks sum to 4 + 5 + 1 = 10 s.
+  run::RankCounters first, second;
+  first.busy_segments = {3.0, 5.0, 1.0};
+  second.busy_segments = {4.0, 3.0};
+  const auto shares = run::imbalance_wait_shares({first, second});
+  ASSERT_EQ(shares.size(), 2u);
+  EXPECT_NEAR(shares[0], 1.0 / 10.0, 1e-15) << "rank 0 waits for rank 1 in segment 0 only";
+  EXPECT_NEAR(shares[1], (2.0 + 1.0) / 10.0, 1e-15) << "rank 1 waits in segments 1 and 2";
+  // Balanced per segment: no imbalance wait, however the totals compare.
+  EXPECT_EQ(run::imbalance_wait_shares({first, first}), (std::vector<double>{0.0, 0.0}));
+  // Equal totals, opposite segments: each waits for the other (the totals hide it).
+  run::RankCounters swapped;
+  swapped.busy_segments = {5.0, 3.0, 1.0};
+  const auto opposite = run::imbalance_wait_shares({first, swapped});
+  EXPECT_NEAR(opposite[0], 2.0 / 11.0, 1e-15);
+  EXPECT_NEAR(opposite[1], 2.0 / 11.0, 1e-15);
+  EXPECT_EQ(run::imbalance_wait_shares({run::RankCounters{}}), (std::vector<double>{0.0}));
+  const auto line = run::rank_balance_line({first, second});
+  EXPECT_NE(line.find("from the imbalance 10.0–30.0 %"), std::string::npos) << line;
 }
 
 TEST(RankBalance, PartitionByPhasesSharesOutBothKindsOfCell) {

@@ -1,0 +1,37 @@
+#pragma once
+// This rank's busy CPU seconds in the time steps, split at the points where the ranks wait for
+// each other, so that the ranks' imbalance can be told from the machine's noise
+// (src/run/rank_balance.hpp).
+//
+// A segment runs from one mark to the next; every rank passes the marks in the same order
+// (the end of each linear solve, of each outer-iteration stage, of each step), so the segments
+// with the same key hold the same part of the computation on every rank. Busy seconds are the
+// thread's CPU seconds less those spent in MPI waits (src/parallel/mpi_wait_clock.hpp): a rank
+// that the operating system takes off its core, or that waits for another, adds nothing. On a
+// machine of their own the ranks would wait, per segment, for the busiest one; the sum over
+// the segments of that difference is the part of a rank's wait that its share of the work
+// causes (a lower bound: the collectives within a segment can wait more).
+//
+// Local: nothing is communicated. Keys are small integers: the step's end, the stages
+// (log_stage.hpp) and the linear systems in the order they are made.
+
+#include <vector>
+
+namespace bagnold::solver {
+
+inline constexpr int step_end_segment = 0;
+inline constexpr int stage_segment_base = 1;   // + the stage's index (Stage)
+inline constexpr int system_segment_base = 8;  // + the linear system's number
+
+// The next linear system's key (systems are numbered in the order they are made).
+int next_system_segment();
+
+// Starts counting: the time since the last mark (outside the time steps) is not counted.
+void restart_busy_segment();
+// Adds the busy seconds since the last mark to the segment `key` and marks now.
+void end_busy_segment(int key);
+
+// Busy seconds per key, summed since the process started (a key never marked holds 0).
+std::vector<double> busy_segment_seconds();
+
+}  // namespace bagnold::solver

@@ -13,8 +13,16 @@ Discretization::Discretization(const parallel::Domain& domain) : m_domain(domain
   const auto local = static_cast<std::size_t>(layout.local_count());
   m_width.resize(3 * local);
   m_opening.resize(local);
+  m_pressure_opening_fluid.assign(local, -1);
   for (std::size_t l = 0; l < local; ++l) {
-    m_opening[l] = grid::is_opening_cell(domain.flags, domain.regions, layout.natural(static_cast<int>(l))) ? 1 : 0;
+    const auto natural = layout.natural(static_cast<int>(l));
+    m_opening[l] = grid::is_opening_cell(domain.flags, domain.regions, natural) ? 1 : 0;
+    const int region = domain.flags.region[static_cast<std::size_t>(natural)];
+    if (m_opening[l] && grid::is_pressure_opening(domain.regions.types[static_cast<std::size_t>(region)]))
+      for (int face = 0; face < 6 && m_pressure_opening_fluid[l] < 0; ++face) {
+        const int n = layout.neighbour(static_cast<int>(l), face);
+        if (n >= 0 && layout.kind(n) == grid::CellKind::fluid) m_pressure_opening_fluid[l] = n;
+      }
     const auto ijk = layout.index3(static_cast<int>(l));
     for (int d = 0; d < 3; ++d)
       m_width[3 * l + static_cast<std::size_t>(d)] = domain.grid.axis(d).width(ijk[static_cast<std::size_t>(d)]);

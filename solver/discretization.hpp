@@ -42,6 +42,11 @@ class Discretization {
   // Whether local cell `local` (or -1: none) is a boundary cell of an opening (pressure outflow
   // or inflow, mass inflow; grid::is_opening_cell).
   bool opening(int local) const { return local >= 0 && m_opening[static_cast<std::size_t>(local)] != 0; }
+  // For a boundary cell of a pressure outflow or inflow (or -1: none), the local fluid cell
+  // beside it; -1 for any other cell, or when that fluid cell is not stored on this rank.
+  int pressure_opening_fluid(int local) const {
+    return local >= 0 ? m_pressure_opening_fluid[static_cast<std::size_t>(local)] : -1;
+  }
 
   // The gas's or the solids' velocity faces (they differ only in what a mass inflow brings).
   const VelocityFaces& faces(Phase phase) const { return *m_faces[static_cast<std::size_t>(phase)]; }
@@ -64,6 +69,7 @@ class Discretization {
  private:
   const parallel::Domain& m_domain;
   std::vector<char> m_opening;  // per local cell: an opening's boundary cell
+  std::vector<int> m_pressure_opening_fluid;  // per local cell: pressure_opening_fluid
   std::vector<double> m_width;  // 3 per local cell
   std::array<std::unique_ptr<VelocityFaces>, 2> m_faces;
   std::array<std::unique_ptr<UnknownNumbering>, 3> m_velocity_numbering;

@@ -9,12 +9,15 @@ namespace bagnold::solver {
 
 namespace {
 std::vector<double> seconds;
-int systems = 0;
+std::vector<std::string> system_names;
 double mark_cpu = 0.0;
 double mark_wait_cpu = 0.0;
 }  // namespace
 
-int next_system_segment() { return system_segment_base + systems++; }
+int next_system_segment(const std::string& name) {
+  system_names.push_back(name);
+  return system_segment_base + static_cast<int>(system_names.size()) - 1;
+}
 
 void restart_busy_segment() {
   mark_cpu = parallel::thread_cpu_seconds();
@@ -31,5 +34,15 @@ void end_busy_segment(int key) {
 }
 
 std::vector<double> busy_segment_seconds() { return seconds; }
+
+std::vector<std::string> busy_segment_names() {
+  std::vector<std::string> names(seconds.size());
+  const char* fixed[system_segment_base] = {"step end",          "closures stage",
+                                            "momentum stage",    "pressure stage",
+                                            "fraction stage",    "energy stage", "", ""};
+  for (std::size_t k = 0; k < names.size(); ++k)
+    names[k] = k < system_segment_base ? fixed[k] : system_names[k - system_segment_base] + " solve";
+  return names;
+}
 
 }  // namespace bagnold::solver

@@ -15,6 +15,7 @@
 // Local: nothing is communicated. Keys are small integers: the step's end, the stages
 // (log_stage.hpp) and the linear systems in the order they are made.
 
+#include <string>
 #include <vector>
 
 namespace bagnold::solver {
@@ -23,8 +24,8 @@ inline constexpr int step_end_segment = 0;
 inline constexpr int stage_segment_base = 1;   // + the stage's index (Stage)
 inline constexpr int system_segment_base = 8;  // + the linear system's number
 
-// The next linear system's key (systems are numbered in the order they are made).
-int next_system_segment();
+// The next linear system's key (systems are numbered in the order they are made), named `name`.
+int next_system_segment(const std::string& name);
 
 // Starts counting: the time since the last mark (outside the time steps) is not counted.
 void restart_busy_segment();
@@ -33,5 +34,9 @@ void end_busy_segment(int key);
 
 // Busy seconds per key, summed since the process started (a key never marked holds 0).
 std::vector<double> busy_segment_seconds();
+// A name per key, as long as busy_segment_seconds(): "step end"; a stage's ("closures stage",
+// …: what it does after its last solve); a linear system's ("pressure solve", "solids_momentum_x
+// solve", …: its solve and what precedes it since the last mark).
+std::vector<std::string> busy_segment_names();
 
 }  // namespace bagnold::solver

@@ -40,7 +40,7 @@ LinearSystem::LinearSystem(MPI_Comm comm, SparsityPattern pattern_in, std::int64
                            const std::string& prefix, const KrylovSettings& settings)
     : m_comm(comm), m_rows(pattern_in.rows()), m_first_row(first_row), m_pattern(std::move(pattern_in)),
       m_values(m_pattern.columns.size(), 0.0), m_rhs_values(static_cast<std::size_t>(m_rows), 0.0),
-      m_prefix(prefix), m_settings(settings), m_segment(next_system_segment()) {
+      m_prefix(prefix), m_settings(settings), m_segment(next_system_segment(prefix.substr(0, prefix.find_last_not_of('_') + 1))) {
   const SparsityPattern& pattern = m_pattern;
   const auto n = static_cast<PetscInt>(m_rows);
   petsc_check(MatCreate(comm, m_matrix.out()), "MatCreate");

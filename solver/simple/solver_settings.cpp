@@ -26,6 +26,7 @@ SolverSettings::SolverSettings(const deck::Deck& deck, const parallel::Domain& d
       viscosity_average(deck::choice_value(deck::viscosity_average_choices,
                                            deck.numerics.viscosity_average, "viscosity average")),
       shear_on_opening_faces(deck.numerics.shear_on_opening_faces),
+      copy_fluxes_into_openings(deck.numerics.copy_fluxes_into_openings),
       viscosity_linearization(deck::choice_value(deck::viscosity_linearization_choices,
                                                  deck.numerics.viscosity_linearization,
                                                  "viscosity linearization")),

@@ -43,6 +43,7 @@ struct SolverSettings {
   double bulk_viscosity_ratio = 0.0;  // numerics.solids_bulk_viscosity_ratio: λ_s += r μ_s
   deck::ViscosityAverage viscosity_average = deck::ViscosityAverage::arithmetic;
   bool shear_on_opening_faces = true;  // numerics.shear_on_opening_faces
+  bool copy_fluxes_into_openings = false;  // numerics.copy_fluxes_into_openings
   deck::ViscosityLinearization viscosity_linearization = deck::ViscosityLinearization::picard;
   bool coupled_solids_momentum = false;  // numerics.solids_momentum = "coupled"
   double vacant_fraction = 1e-8;  // numerics.vacant_fraction: Θ = 0 at or below this ε_s

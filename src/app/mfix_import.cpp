@@ -655,6 +655,9 @@ void Translator::numerics_and_output() {
   out_ << "shear_on_opening_faces = false   # as MFIX's zero viscosity in flow cells (docs/import-mfix.md)\n";
   // MFIX's SET_OUTFLOW copies the fluid cell's tangential velocities into a PO or PI cell.
   out_ << "copy_velocity_into_openings = true   # as MFIX's SET_OUTFLOW (docs/import-mfix.md)\n";
+  // MFIX's SET_OUTFLOW_FLUXES copies the fluid cell's mass fluxes into a PO or PI cell, and its
+  // momentum equations convect with them (GET_VCELL_SCFLUX_TERMS and its siblings).
+  out_ << "copy_fluxes_into_openings = true   # as MFIX's SET_OUTFLOW_FLUXES (docs/import-mfix.md)\n";
   // MFIX's face and edge viscosities are harmonic means (AVG_H in GET_VCELL_SDIFF_TERMS and its
   // siblings); with Bagnold's arithmetic default the bin's orifice cells against the side walls
   // dilate into the kinetic regime, which MFIX's do not (cases/bin/mfix/README.md).

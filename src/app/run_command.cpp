@@ -30,6 +30,7 @@
 #include "src/run/restart_snapshot.hpp"
 #include "src/run/run_directory.hpp"
 #include "src/run/work_weights.hpp"
+#include "solver/petsc/busy_segments.hpp"
 #include "solver/simple/face_fractions.hpp"
 
 namespace bagnold::app {
@@ -200,8 +201,15 @@ int run_command(const DeckArguments& args) {
                                          start.time_step_memory);
       result.continue_with(segment);
       if (segment.repartition_from.empty()) {
-        if (comm.size() > 1)
-          rank_table = run::rank_balance_table(run::gather_rank_counters(comm, rank_counters(domain, state)));
+        if (comm.size() > 1) {
+          const auto ranks = run::gather_rank_counters(comm, rank_counters(domain, state));
+          rank_table = run::rank_balance_table(ranks);
+          // --verbose: where the busy seconds differ (rank_balance.hpp).
+          if (args.verbose)
+            rank_table += "\nbagnold run: busy CPU seconds per segment (between the points where the ranks "
+                          "meet), largest lead first\n" +
+                          run::busy_segment_table(ranks, solver::busy_segment_names());
+        }
         break;
       }
       // Partition anew by the state (by work, or by phases); the next segment reads the state back from the

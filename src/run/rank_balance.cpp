@@ -50,6 +50,11 @@ double solids(const RankCounters& r) { return r.solids_cells; }
 double assembly(const RankCounters& r) { return r.seconds.assembly; }
 double solves(const RankCounters& r) { return r.seconds.solves; }
 double waits(const RankCounters& r) { return r.seconds.waits; }
+double busy(const RankCounters& r) {
+  double total = 0.0;
+  for (const double b : r.busy_segments) total += b;
+  return total;
+}
 
 }  // namespace
 
@@ -115,20 +120,50 @@ std::vector<RankCounters> gather_rank_counters(const parallel::Communicator& com
 
 std::string rank_balance_table(const std::vector<RankCounters>& ranks) {
   const auto imbalance = imbalance_wait_shares(ranks);
-  std::string text = fmt::format("{:>8} {:>10} {:>10} {:>10} {:>12} {:>10} {:>10} {:>6} {:>11}\n",
+  std::string text = fmt::format("{:>8} {:>10} {:>10} {:>10} {:>12} {:>10} {:>10} {:>6} {:>8} {:>11}\n",
                                  "rank", "cells", "fluid", "solids", "assembly/s", "solves/s",
-                                 "wait/s", "wait%", "imbalance%");
+                                 "wait/s", "wait%", "busy/s", "imbalance%");
   for (std::size_t r = 0; r < ranks.size(); ++r) {
     const auto& c = ranks[r];
-    text += fmt::format("{:>8} {:>10.0f} {:>10.0f} {:>10.0f} {:>12.2f} {:>10.2f} {:>10.2f} {:>6.1f} {:>11.1f}\n",
+    text += fmt::format("{:>8} {:>10.0f} {:>10.0f} {:>10.0f} {:>12.2f} {:>10.2f} {:>10.2f} {:>6.1f} {:>8.2f} {:>11.1f}\n",
                         r, c.owned_cells, c.fluid_cells, c.solids_cells, c.seconds.assembly,
-                        c.seconds.solves, c.seconds.waits, 100.0 * c.wait_share(),
+                        c.seconds.solves, c.seconds.waits, 100.0 * c.wait_share(), busy(c),
                         100.0 * imbalance[r]);
   }
-  text += fmt::format("{:>8} {:>10} {:>10} {:>10} {:>12} {:>10} {:>10}\n", "max/min",
+  text += fmt::format("{:>8} {:>10} {:>10} {:>10} {:>12} {:>10} {:>10} {:>6} {:>8}\n", "max/min",
                       ratio(ranks, owned), ratio(ranks, fluid), ratio(ranks, solids),
-                      ratio(ranks, assembly), ratio(ranks, solves), ratio(ranks, waits));
+                      ratio(ranks, assembly), ratio(ranks, solves), ratio(ranks, waits), "",
+                      ratio(ranks, busy));
   text.pop_back();  // the caller ends the line
+  return text;
+}
+
+std::string busy_segment_table(const std::vector<RankCounters>& ranks,
+                               const std::vector<std::string>& names) {
+  struct Row {
+    std::string name;
+    std::vector<double> busy;
+    double lead;
+  };
+  std::vector<Row> rows;
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    Row row{names[k], {}, 0.0};
+    for (const auto& r : ranks) row.busy.push_back(k < r.busy_segments.size() ? r.busy_segments[k] : 0.0);
+    const auto [low, high] = std::minmax_element(row.busy.begin(), row.busy.end());
+    if (row.busy.empty() || *high <= 0.0) continue;
+    row.lead = *high - *low;
+    rows.push_back(std::move(row));
+  }
+  std::stable_sort(rows.begin(), rows.end(), [](const Row& a, const Row& b) { return a.lead > b.lead; });
+  std::string text = fmt::format("{:>20}", "segment");
+  for (std::size_t r = 0; r < ranks.size(); ++r) text += fmt::format(" {:>10}", fmt::format("rank {}/s", r));
+  text += fmt::format(" {:>10}\n", "lead/s");
+  for (const auto& row : rows) {
+    text += fmt::format("{:>20}", row.name);
+    for (const double b : row.busy) text += fmt::format(" {:>10.2f}", b);
+    text += fmt::format(" {:>10.2f}\n", row.lead);
+  }
+  text.pop_back();
   return text;
 }
 

@@ -55,6 +55,10 @@ std::vector<double> imbalance_wait_shares(const std::vector<RankCounters>& ranks
 // The table printed at the end of a run: a row per rank, then the max/min ratio of each column
 // ("inf" when the smallest is 0).
 std::string rank_balance_table(const std::vector<RankCounters>& ranks);
+// The busy seconds per segment (`names`, one per key) and rank, and the busiest rank's lead over
+// the least busy, largest lead first; segments with no busy seconds are left out.
+std::string busy_segment_table(const std::vector<RankCounters>& ranks,
+                               const std::vector<std::string>& names);
 // One line for the run log: the max/min ratios of fluid cells, solids cells, assembly and solve
 // seconds, the range of the ranks' wait shares and of their imbalance wait shares, and the work
 // imbalance now ("ranks: fluid cells max/min 1.00, solids cells 2.31, assembly 1.85, solves

@@ -195,6 +195,8 @@ TEST(MfixImport, OpeningsTakeMfixsTreatmentOfTheWallsBesideThem) {
       << result.deck;
   EXPECT_TRUE(contains(result.deck, "copy_velocity_into_openings = true   # as MFIX's SET_OUTFLOW"))
       << result.deck;
+  EXPECT_TRUE(contains(result.deck, "copy_fluxes_into_openings = true   # as MFIX's SET_OUTFLOW_FLUXES"))
+      << result.deck;
   // MFIX's harmonic face and edge means of the viscosity (AVG_H).
   EXPECT_TRUE(contains(result.deck, "viscosity_average = \"harmonic\"   # as MFIX's AVG_H")) << result.deck;
   // That the keys exist and load: cli_import_mfix_bin_* run `bagnold check` on the imports.

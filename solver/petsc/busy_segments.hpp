@@ -5,10 +5,13 @@
 //
 // A segment runs from one mark to the next; every rank passes the marks in the same order
 // (the end of each linear solve, of each outer-iteration stage, of each step), so the segments
-// with the same key hold the same part of the computation on every rank. Busy seconds are the
-// thread's CPU seconds less those spent in MPI waits (src/parallel/mpi_wait_clock.hpp): a rank
-// that the operating system takes off its core, or that waits for another, adds nothing. On a
-// machine of their own the ranks would wait, per segment, for the busiest one; the sum over
+// with the same key hold the same part of the computation on every rank. A segment's busy
+// seconds are the thread's CPU seconds in it less those it spent waiting in MPI
+// (src/parallel/mpi_wait_clock.hpp) on the processor: the waits' wall seconds less their share
+// of the time the thread was off the processor (wall less CPU seconds), taken as spread evenly
+// over the segment. So a rank that the operating system takes off its core adds nothing, and
+// the CPU clock (a system call) is read once per segment, not twice per MPI call. On
+// a machine of their own the ranks would wait, per segment, for the busiest one; the sum over
 // the segments of that difference is the part of a rank's wait that its share of the work
 // causes (a lower bound: the collectives within a segment can wait more).
 //

@@ -8,7 +8,6 @@ namespace bagnold::parallel {
 
 namespace {
 double total = 0.0;
-double total_cpu = 0.0;
 int depth = 0;
 
 // Calls `call` (a PMPI_ function) and adds its duration to the total.
@@ -17,18 +16,14 @@ int timed(Call call) {
   if (depth > 0) return call();
   ++depth;
   const double start = PMPI_Wtime();
-  const double start_cpu = thread_cpu_seconds();
   const int status = call();
   total += PMPI_Wtime() - start;
-  total_cpu += thread_cpu_seconds() - start_cpu;
   --depth;
   return status;
 }
 }  // namespace
 
 double mpi_wait_seconds() { return total; }
-
-double mpi_wait_cpu_seconds() { return total_cpu; }
 
 double thread_cpu_seconds() {
   timespec now{};

@@ -9,11 +9,8 @@
 namespace bagnold::parallel {
 
 double mpi_wait_seconds();
-// This thread's CPU seconds in the same calls (MPI polls while it waits, so a wait costs CPU
-// time too, except while the operating system has the rank off its core).
-double mpi_wait_cpu_seconds();
-
-// This thread's CPU seconds since an arbitrary start (CLOCK_THREAD_CPUTIME_ID).
+// This thread's CPU seconds since an arbitrary start (CLOCK_THREAD_CPUTIME_ID; a system call,
+// so not for every MPI call).
 double thread_cpu_seconds();
 
 }  // namespace bagnold::parallel

@@ -15,8 +15,15 @@
 // the segments of that difference is the part of a rank's wait that its share of the work
 // causes (a lower bound: the collectives within a segment can wait more).
 //
+// Each segment also counts its work in units that do not depend on the machine: a linear
+// system's assembly its rows, its solve the rows of its Krylov system times (iterations + 1), a
+// stage's rest its owned fluid cells (closures: and its solids cells), a step's end 1. Busy
+// seconds over units, pooled over the ranks, is a segment's cost per unit; each rank's units at
+// that cost are its counted work (src/run/rank_balance.hpp), which a slower core does not
+// inflate.
+//
 // Local: nothing is communicated. Keys are small integers: the step's end, the stages
-// (log_stage.hpp) and the linear systems in the order they are made.
+// (log_stage.hpp) and two per linear system (its assembly, its solve) in the order they are made.
 
 #include <string>
 #include <vector>
@@ -27,19 +34,22 @@ inline constexpr int step_end_segment = 0;
 inline constexpr int stage_segment_base = 1;   // + the stage's index (Stage)
 inline constexpr int system_segment_base = 8;  // + the linear system's number
 
-// The next linear system's key (systems are numbered in the order they are made), named `name`.
+// The next linear system's assembly key (systems are numbered in the order they are made),
+// named `name`; its solve's key is the next one.
 int next_system_segment(const std::string& name);
 
 // Starts counting: the time since the last mark (outside the time steps) is not counted.
 void restart_busy_segment();
-// Adds the busy seconds since the last mark to the segment `key` and marks now.
-void end_busy_segment(int key);
+// Adds the busy seconds since the last mark, and `work_units`, to the segment `key`, and marks now.
+void end_busy_segment(int key, double work_units);
 
-// Busy seconds per key, summed since the process started (a key never marked holds 0).
+// Busy seconds and work units per key, summed since the process started (a key never marked
+// holds 0).
 std::vector<double> busy_segment_seconds();
+std::vector<double> busy_segment_units();
 // A name per key, as long as busy_segment_seconds(): "step end"; a stage's ("closures stage",
-// …: what it does after its last solve); a linear system's ("pressure solve", "solids_momentum_x
-// solve", …: its solve and what precedes it since the last mark).
+// …: what it does after its last solve); a linear system's ("pressure assembly": from the last
+// mark to its solve; "pressure solve").
 std::vector<std::string> busy_segment_names();
 
 }  // namespace bagnold::solver

@@ -112,11 +112,13 @@ void LinearSystem::keep_preconditioner() {
 void LinearSystem::renew_preconditioner() { create_ksp(); }
 
 SolveReport LinearSystem::solve(std::vector<double>& x) {
-  // The busy segment since the last mark ends with this solve, on every return path.
-  struct SegmentEnd {
-    int key;
-    ~SegmentEnd() { end_busy_segment(key); }
-  } const segment_end{m_segment};
+  end_busy_segment(m_segment, static_cast<double>(m_rows));  // the assembly's (busy_segments.hpp)
+  const SolveReport report = solve_assembled(x);
+  end_busy_segment(m_segment + 1, static_cast<double>(krylov_rows()) * (report.iterations + 1));
+  return report;
+}
+
+SolveReport LinearSystem::solve_assembled(std::vector<double>& x) {
   petsc_check(MatSetValuesCOO(m_matrix.get(), m_values.data(), INSERT_VALUES), "MatSetValuesCOO");
   PetscScalar* rhs = nullptr;
   petsc_check(VecGetArray(m_rhs.get(), &rhs), "VecGetArray");

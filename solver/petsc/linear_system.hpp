@@ -63,6 +63,7 @@ class LinearSystem {
 
  private:
   void create_ksp();  // (re)creates the KSP with the settings and the command-line options
+  SolveReport solve_assembled(std::vector<double>& x);  // solve() after its busy segment's mark
   // KSPSolve of matrix · solution = rhs with m_ksp; a solution with Inf or NaN recreates the KSP.
   SolveReport run_ksp(Mat matrix, Vec rhs, Vec solution);
   // solve() under solve_decoupled_rows_directly, after the matrix and right-hand side are set.
@@ -82,7 +83,7 @@ class LinearSystem {
   std::vector<double> m_rhs_values;
   std::string m_prefix;
   KrylovSettings m_settings;
-  int m_segment;  // this system's busy segment (busy_segments.hpp)
+  int m_segment;  // this system's assembly's busy segment; its solve's is the next (busy_segments.hpp)
   PetscMat m_matrix;
   PetscVec m_rhs, m_solution;
   PetscKsp m_ksp;

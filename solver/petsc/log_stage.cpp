@@ -19,10 +19,12 @@ PetscLogStage stage_id(Stage stage) {
 }
 }  // namespace
 
-ScopedStage::ScopedStage(Stage stage) : m_stage(stage) { PetscLogStagePush(stage_id(stage)); }
+ScopedStage::ScopedStage(Stage stage, double work_units) : m_stage(stage), m_work_units(work_units) {
+  PetscLogStagePush(stage_id(stage));
+}
 ScopedStage::~ScopedStage() {
   PetscLogStagePop();
-  end_busy_segment(stage_segment_base + static_cast<int>(m_stage));
+  end_busy_segment(stage_segment_base + static_cast<int>(m_stage), m_work_units);
 }
 
 }  // namespace bagnold::solver

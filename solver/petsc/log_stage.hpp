@@ -11,13 +11,15 @@ enum class Stage { closures, momentum, pressure, fraction, energy };
 
 class ScopedStage {
  public:
-  explicit ScopedStage(Stage stage);
+  // `work_units`: what the stage's rest after its last solve counts (busy_segments.hpp).
+  ScopedStage(Stage stage, double work_units);
   ~ScopedStage();
   ScopedStage(const ScopedStage&) = delete;
   ScopedStage& operator=(const ScopedStage&) = delete;
 
  private:
   Stage m_stage;
+  double m_work_units;
 };
 
 }  // namespace bagnold::solver

@@ -42,13 +42,19 @@ bool FlowSolver::iterate(run::FlowState& state, const run::FlowState& old, doubl
                          double velocity_scale, IterationSums& sums, StepResult& result) {
   const Discretization& disc = m_discretization;
   IterationFields& f = m_fields;
+  // What each stage's rest counts as work (busy_segments.hpp): its fluid cells, the closures'
+  // also its cells holding solids.
+  const int fluid_cells = disc.layout().owned_fluid_count();
+  int solids_cells = 0;
+  for (int l = 0; l < fluid_cells; ++l)
+    if (state.solids_fraction[static_cast<std::size_t>(l)] > solids_threshold) ++solids_cells;
   {
-    const ScopedStage stage(Stage::closures);
+    const ScopedStage stage(Stage::closures, fluid_cells + solids_cells);
     m_closures.evaluate(disc, state, old, dt, f.closures);
   }
   carry_all_fractions(disc, state, f.carried);
   {
-    const ScopedStage stage(Stage::momentum);
+    const ScopedStage stage(Stage::momentum, fluid_cells);
     const MomentumPredictor::Inputs inputs{old, dt, f.closures, f.carried, velocity_scale, first};
     for (int d = 0; d < 3; ++d) {
       if (!m_predictor.predict(d, inputs, state, f.response, sums, f.worst, result)) return false;
@@ -60,17 +66,17 @@ bool FlowSolver::iterate(run::FlowState& state, const run::FlowState& old, doubl
     }
   }
   if (m_pressure) {
-    const ScopedStage stage(Stage::pressure);
+    const ScopedStage stage(Stage::pressure, fluid_cells);
     if (!m_pressure->correct(f.response, f.carried, state, sums, f.worst, result)) return false;
     carry_all_fractions(disc, state, f.carried);
   }
   if (m_fraction) {
-    const ScopedStage stage(Stage::fraction);
+    const ScopedStage stage(Stage::fraction, fluid_cells);
     if (!m_fraction->correct(old, dt, f.closures, f.response, f.carried, state, sums, f.worst, result))
       return false;
   }
   if (m_energy) {
-    const ScopedStage stage(Stage::energy);
+    const ScopedStage stage(Stage::energy, fluid_cells);
     carry_all_fractions(disc, state, f.carried);
     if (!m_energy->solve(old, dt, f.closures, f.carried, state, sums, f.worst, result)) return false;
   }

@@ -206,8 +206,8 @@ int run_command(const DeckArguments& args) {
           rank_table = run::rank_balance_table(ranks);
           // --verbose: where the busy seconds differ (rank_balance.hpp).
           if (args.verbose)
-            rank_table += "\nbagnold run: busy CPU seconds per segment (between the points where the ranks "
-                          "meet), largest lead first\n" +
+            rank_table += "\nbagnold run: per segment (between the points where the ranks meet), each "
+                          "rank's busy CPU seconds and counted work, largest lead first\n" +
                           run::busy_segment_table(ranks, solver::busy_segment_names());
         }
         break;

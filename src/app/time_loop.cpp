@@ -20,7 +20,7 @@ run::RankCounters rank_counters(const parallel::Domain& domain, const run::FlowS
   const auto work = solver::work_seconds();
   return run::count_rank(domain.layout, state, solver::solids_threshold,
                          {work.steps - work.solves, work.solves, work.waits},
-                         solver::busy_segment_seconds());
+                         solver::busy_segment_seconds(), solver::busy_segment_units());
 }
 
 std::vector<std::string> monitor_columns(const deck::Deck& deck, const parallel::Domain& domain) {

@@ -28,16 +28,17 @@ struct RankCounters {
   double solids_cells = 0.0;  // owned fluid cells with ε_s > the threshold
   RankSeconds seconds;
   std::vector<double> busy_segments;  // busy CPU seconds per segment key
+  std::vector<double> work_units;     // work units per segment key (the same length)
 
   // waits / (assembly + solves); 0 before any work.
   double wait_share() const;
 };
 
 // This rank's counters: its owned cells in `layout`, its cells with ε_s > `solids_threshold` in
-// `state`, and `seconds` and `busy_segments` as given.
+// `state`, and `seconds`, `busy_segments` and `work_units` as given.
 RankCounters count_rank(const parallel::Layout& layout, const FlowState& state,
                         double solids_threshold, const RankSeconds& seconds,
-                        std::vector<double> busy_segments = {});
+                        std::vector<double> busy_segments = {}, std::vector<double> work_units = {});
 // Every rank's, in rank order, on every rank. Collective.
 std::vector<RankCounters> gather_rank_counters(const parallel::Communicator& comm,
                                                const RankCounters& mine);
@@ -47,9 +48,12 @@ std::vector<RankCounters> gather_rank_counters(const parallel::Communicator& com
 // 0 for no ranks or no work.
 double work_imbalance(const std::vector<RankCounters>& ranks);
 
-// Per rank, the share of its time it would wait for the others on a machine of its own: per
-// segment the busiest rank's busy seconds less its own, summed over the segments, over the sum
-// of the busiest ranks' (0 for every rank without busy seconds).
+// Per rank and segment, the counted work in seconds: its work units at the segment's cost per
+// unit, the ranks' busy seconds over their units (its busy seconds where no rank counted units).
+std::vector<std::vector<double>> counted_work(const std::vector<RankCounters>& ranks);
+// Per rank, the share of its time it would wait for the others on a machine of its own, with
+// ranks equally fast: per segment the largest counted work less its own, summed over the
+// segments, over the sum of the largest (0 for every rank without busy seconds).
 std::vector<double> imbalance_wait_shares(const std::vector<RankCounters>& ranks);
 
 // The table printed at the end of a run: a row per rank, then the max/min ratio of each column

@@ -84,8 +84,8 @@ TEST(RankBalance, WorkImbalanceWeighsSolidsCellsAsThePartitionDoes) {
 }
 
 TEST(RankBalance, TableGivesMaxOverMin) {
-  const std::vector<run::RankCounters> ranks = {{10, 8, 0, {3.0, 1.0, 1.0}, {}},
-                                                {12, 8, 4, {6.0, 2.0, 0.2}, {}}};
+  const std::vector<run::RankCounters> ranks = {{10, 8, 0, {3.0, 1.0, 1.0}, {}, {}},
+                                                {12, 8, 4, {6.0, 2.0, 0.2}, {}, {}}};
   const auto table = run::rank_balance_table(ranks);
   EXPECT_NE(table.find("max/min       1.20       1.00        inf         2.00       2.00       5.00"),
             std::string::npos)
@@ -97,7 +97,28 @@ TEST(RankBalance, TableGivesMaxOverMin) {
   // work 80 and 120; no busy segments
 }
 
+TEST(RankBalance, CountedWorkSplitsEachSegmentsSecondsByTheRanksUnits) {
+  // Segment 0: 10 busy seconds over 100 + 300 units, so 0.025 s per unit whatever each rank's
+  // own seconds (a slower core's 6 s for 100 units counts as 2.5 s); segment 1 has no units:
+  // its busy seconds stand.
+  run::RankCounters slow, fast;
+  slow.busy_segments = {6.0, 1.0};
+  slow.work_units = {100.0, 0.0};
+  fast.busy_segments = {4.0, 2.0};
+  fast.work_units = {300.0, 0.0};
+  const auto work = run::counted_work({slow, fast});
+  EXPECT_NEAR(work[0][0], 2.5, 1e-14);
+  EXPECT_NEAR(work[1][0], 7.5, 1e-14);
+  EXPECT_EQ(work[0][1], 1.0);
+  EXPECT_EQ(work[1][1], 2.0);
+  // The largest counted work sums to 7.5 + 2; the slow rank waits 5 + 1 of it.
+  const auto shares = run::imbalance_wait_shares({slow, fast});
+  EXPECT_NEAR(shares[0], 6.0 / 9.5, 1e-14);
+  EXPECT_NEAR(shares[1], 0.0, 1e-14);
+}
+
 TEST(RankBalance, ImbalanceWaitIsTheBusiestRanksLeadPerSegment) {
+  // Without units the counted work is the busy seconds.
   // Segment 0: rank 1 busier by 1 s; segment 1: rank 0 busier by 2 s; segment 2 only on rank 0
   // (rank 1 never marked it). The busiest ranks sum to 4 + 5 + 1 = 10 s.
   run::RankCounters first, second;

@@ -159,8 +159,8 @@ RunSummary run_time_loop(const TimeLoopContext& context, FlowSolver& flow, run::
         if (limit > 0.0 && imbalance > partition_imbalance + limit && !stop && !finished) {
           context.log(fmt::format("t = {:.6g} s: the largest rank's work is {:.1f} % above the "
                                   "mean, {:.1f} % when this partition was made "
-                                  "(numerics.repartition_imbalance = {:.3g}): repartitioning by "
-                                  "work from {}",
+                                  "(numerics.repartition_imbalance = {:.3g}): repartitioning from "
+                                  "{}",
                                   time, 100.0 * imbalance, 100.0 * partition_imbalance, limit,
                                   written));
           summary.repartition_from = written;

@@ -16,7 +16,7 @@ for limit in 0 0.05; do
   $mpirun --oversubscribe -np 2 $bagnold run cases/bin/bin-10mm.toml $common \
     --set numerics.repartition_imbalance=$limit --set output.directory=$work/limit$limit > $work/limit$limit.log
 done
-test "$(grep -c "repartitioning by work from .*snapshot_000001.h5" $work/limit0.05.log)" -eq 1
+test "$(grep -c "repartitioning from .*snapshot_000001.h5" $work/limit0.05.log)" -eq 1
 grep "partition by work" $work/limit0.05.log | grep -v "fluid cells per rank 800..800"
 ! grep -q "repartitioning" $work/limit0.log
 test "$(ls $work/limit0.05/snapshot_*.h5 | wc -l)" -eq 5

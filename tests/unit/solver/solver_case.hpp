@@ -48,6 +48,16 @@ inline std::string two_fluid(const std::string& stress = "plastic", bool with_ga
 inline const std::string tight_linear_solves =
     "[numerics]\npressure_tolerance = 1e-12\nmomentum_tolerance = 1e-12\n";
 
+// A 3 × 3 × 3 box of 1 cm cells, solids in vacuum with the plastic closure, with a pressure
+// outflow under its middle floor cell (x, y in 1–2 cm), and `numerics` (lines of [numerics]).
+inline std::string box_with_a_hole(const std::string& numerics) {
+  return unit_deck(3, 3, 3, "", 0.0,
+                   two_fluid("plastic", false) +
+                       "[[boundary]]\nname = \"hole\"\ntype = \"pressure_outflow\"\nface = \"z-\"\n"
+                       "min = [0.01, 0.01, -1.0]\nmax = [0.02, 0.02, 0.0]\npressure = 101325.0\n"
+                       "[numerics]\n" + numerics + "\n");
+}
+
 inline std::string gas_only() { return "[gas]\ndensity = 1.2\nviscosity = 1.8e-5\n[solids]\nenabled = false\n"; }
 
 // Deck, domain, discretization, settings and a state (all fields per local cell).

@@ -223,12 +223,7 @@ TEST(FullStress, TwoLayerCouetteProfileIsExactWithHarmonicViscosities) {
 // outflow cell's open condition across that edge either way (velocity_faces.cpp,
 // side_condition looks at the cell under c first).
 std::string box_with_a_hole(bool shear_on_opening_faces) {
-  return unit_deck(3, 3, 3, "", 0.0,
-                   two_fluid("plastic", false) +
-                       "[[boundary]]\nname = \"hole\"\ntype = \"pressure_outflow\"\nface = \"z-\"\n"
-                       "min = [0.01, 0.01, -1.0]\nmax = [0.02, 0.02, 0.0]\npressure = 101325.0\n"
-                       "[numerics]\nshear_on_opening_faces = " +
-                       (shear_on_opening_faces ? "true" : "false") + "\n");
+  return tests::box_with_a_hole(std::string("shear_on_opening_faces = ") + (shear_on_opening_faces ? "true" : "false"));
 }
 
 std::vector<double> plug_over_a_hole(StressRows& s, int d, double speed) {

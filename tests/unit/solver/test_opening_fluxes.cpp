@@ -24,15 +24,6 @@ constexpr double fraction = 0.5;               // ε_s everywhere
 constexpr double w_hole = -0.4, w_top = -0.2;  // w_s on the hole's face and the cell's top face [m/s]
 constexpr double u_east = -0.3;                // u_s on the east face of the cell over the hole [m/s]
 
-std::string box_with_a_hole(bool copy_fluxes) {
-  return unit_deck(3, 3, 3, "", 0.0,
-                   two_fluid("plastic", false) +
-                       "[[boundary]]\nname = \"hole\"\ntype = \"pressure_outflow\"\nface = \"z-\"\n"
-                       "min = [0.01, 0.01, -1.0]\nmax = [0.02, 0.02, 0.0]\npressure = 101325.0\n"
-                       "[numerics]\ncopy_fluxes_into_openings = " +
-                       std::string(copy_fluxes ? "true" : "false") + "\n");
-}
-
 bool near(const std::array<double, 3>& x, double a, double b, double c) {
   return std::abs(x[0] - a) < 1e-12 && std::abs(x[1] - b) < 1e-12 && std::abs(x[2] - c) < 1e-12;
 }
@@ -40,7 +31,7 @@ bool near(const std::array<double, 3>& x, double a, double b, double c) {
 // The solids z-rows of the box, with the velocities above on its unknown faces and 0 elsewhere.
 struct HoleRows {
   explicit HoleRows(bool copy_fluxes)
-      : c(box_with_a_hole(copy_fluxes)), carried(static_cast<std::size_t>(c.local_count())) {
+      : c(box_with_a_hole(std::string("copy_fluxes_into_openings = ") + (copy_fluxes ? "true" : "false"))), carried(static_cast<std::size_t>(c.local_count())) {
     for (int l = 0; l < c.local_count(); ++l) {
       const auto i = static_cast<std::size_t>(l);
       c.state.solids_fraction[i] = fraction;

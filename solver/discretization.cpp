@@ -19,7 +19,9 @@ Discretization::Discretization(const parallel::Domain& domain) : m_domain(domain
     m_opening[l] = grid::is_opening_cell(domain.flags, domain.regions, natural) ? 1 : 0;
     const int region = domain.flags.region[static_cast<std::size_t>(natural)];
     if (m_opening[l] && grid::is_pressure_opening(domain.regions.types[static_cast<std::size_t>(region)]))
-      for (int face = 0; face < 6 && m_pressure_opening_fluid[l] < 0; ++face) {
+      // The last fluid neighbour in the order −x, +x, −y, +y, −z, +z: MFIX's SET_OUTFLOW copies
+      // from each fluid neighbour in that order (W, E, S, N, B, T), so the last one stands.
+      for (int face = 0; face < 6; ++face) {
         const int n = layout.neighbour(static_cast<int>(l), face);
         if (n >= 0 && layout.kind(n) == grid::CellKind::fluid) m_pressure_opening_fluid[l] = n;
       }

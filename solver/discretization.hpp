@@ -43,7 +43,8 @@ class Discretization {
   // or inflow, mass inflow; grid::is_opening_cell).
   bool opening(int local) const { return local >= 0 && m_opening[static_cast<std::size_t>(local)] != 0; }
   // For a boundary cell of a pressure outflow or inflow (or -1: none), the local fluid cell
-  // beside it; -1 for any other cell, or when that fluid cell is not stored on this rank.
+  // beside it (the last in the order −x, +x, −y, +y, −z, +z, as MFIX's SET_OUTFLOW); -1 for
+  // any other cell, or when no fluid neighbour is stored on this rank.
   int pressure_opening_fluid(int local) const {
     return local >= 0 ? m_pressure_opening_fluid[static_cast<std::size_t>(local)] : -1;
   }

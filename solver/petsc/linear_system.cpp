@@ -112,7 +112,9 @@ void LinearSystem::keep_preconditioner() {
 void LinearSystem::renew_preconditioner() { create_ksp(); }
 
 SolveReport LinearSystem::solve(std::vector<double>& x) {
-  end_busy_segment(m_segment, static_cast<double>(m_rows));  // the assembly's (busy_segments.hpp)
+  // The assembly's segment (busy_segments.hpp).
+  end_busy_segment(m_segment, m_assembly_units >= 0.0 ? m_assembly_units : static_cast<double>(m_rows));
+  m_assembly_units = -1.0;
   const SolveReport report = solve_assembled(x);
   end_busy_segment(m_segment + 1, static_cast<double>(krylov_rows()) * (report.iterations + 1));
   return report;

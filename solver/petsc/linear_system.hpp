@@ -57,6 +57,10 @@ class LinearSystem {
   void renew_preconditioner();
   // Solves with `x` (owned entries, in row order) as the initial guess; x is overwritten.
   SolveReport solve(std::vector<double>& x);
+  // The work units the next solve's assembly segment counts (busy_segments.hpp): by default
+  // this rank's rows; a caller that assembles several systems before solving them gives the
+  // first solved all their rows and the others none.
+  void set_assembly_units(double units) { m_assembly_units = units; }
   // Rows in the last solve's Krylov system on this rank (all owned rows unless
   // solve_decoupled_rows_directly).
   std::int64_t krylov_rows() const;
@@ -84,6 +88,7 @@ class LinearSystem {
   std::string m_prefix;
   KrylovSettings m_settings;
   int m_segment;  // this system's assembly's busy segment; its solve's is the next (busy_segments.hpp)
+  double m_assembly_units = -1.0;  // set_assembly_units for the next solve; < 0: the rows
   PetscMat m_matrix;
   PetscVec m_rhs, m_solution;
   PetscKsp m_ksp;

@@ -116,6 +116,7 @@ void CoupledSolidsMomentum::set_row(int d, std::size_t r, const MomentumRow& row
 }
 
 SolveReport CoupledSolidsMomentum::solve(std::array<std::vector<double>, 3>& velocity) {
+  m_system->set_assembly_units(0.0);  // the rows were assembled, and counted, by each predict
   const SolveReport report = m_system->solve(m_x);
   const auto& layout = m_discretization.layout();
   for (int d = 0; d < 3; ++d) {

@@ -260,9 +260,18 @@ bool MomentumPredictor::predict(int d, const Inputs& in, run::FlowState& state,
   }
   sums.interventions[negative_stiffness] += explicit_stiffness_faces;
 
+  // Both phases' rows were assembled before either solve: the first solve's assembly segment
+  // counts the gas rows and the solids rows where there are solids (busy_segments.hpp).
+  double assembly_units = 0.0;
+  for (std::size_t r = 0; r < numbering.owned_locals.size(); ++r)
+    assembly_units += (moves[gas] ? 1.0 : 0.0) + (moves[solids] && rows[solids][r].active ? 1.0 : 0.0);
   bool solved = true;
   for (const Phase phase : {gas, solids}) {
     if (!moves[phase]) continue;
+    if (m_systems[phase][ud]) {
+      m_systems[phase][ud]->set_assembly_units(assembly_units);
+      assembly_units = 0.0;
+    }
     if (phase == solids && m_coupled) {
       parallel::exchange_halo<double>(layout, response.pressure[phase][ud]);
       continue;

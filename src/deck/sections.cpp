@@ -371,10 +371,11 @@ const Section<Numerics>& numerics_section() {
                "(docs/import-mfix.md)."),
       key(&Numerics::copy_fluxes_into_openings, "copy_fluxes_into_openings").init()
           .doc("In the momentum equations' convection only: whether the outside cell of a "
-               "pressure outflow or inflow carries the mass fluxes of the fluid cell beside it on "
-               "all its faces, as MFIX's SET_OUTFLOW_FLUXES copies the fluxes into its outflow "
-               "cells, instead of its own (false: the opening's face flux, and none across the "
-               "outside cell's other faces). true: an opening's velocity face takes in, over its "
+               "pressure outflow or inflow carries, on the three faces it stores (its +x, +y and "
+               "+z faces), the mass fluxes of the fluid cell beside it, as MFIX's "
+               "SET_OUTFLOW_FLUXES copies Flux_E, Flux_N and Flux_T into its outflow cells, "
+               "instead of its own (false: the opening's face flux, and none across the outside "
+               "cell's other faces). true: an opening's velocity face takes in, over its "
                "control volume's whole height, the momentum the material beside the opening "
                "brings sideways (at the rim, a wall's zero), so material leaves an orifice "
                "slower: MFIX's bin decks drain 10.6 % (10 mm) and 10.9 % (5 mm) slower "

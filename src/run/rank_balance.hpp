@@ -5,8 +5,9 @@
 // solves, and waiting for other ranks in MPI during the time steps (part of the other two), and
 // its busy CPU seconds per segment of the time steps (solver/petsc/busy_segments.hpp), from
 // which the part of the waits that the partition causes is told from the part that the
-// machine's noise causes. The counts are this rank's alone; gather_rank_counters is the one
-// collective (an all-gather of a few numbers), made only when the balance is shown.
+// machine's noise causes. The counts are this rank's alone; gather_rank_counters is the only
+// communication (a maximum and an all-gather of a few dozen numbers), made only when the balance
+// is shown.
 
 #include <string>
 #include <vector>
@@ -59,8 +60,9 @@ std::vector<double> imbalance_wait_shares(const std::vector<RankCounters>& ranks
 // The table printed at the end of a run: a row per rank, then the max/min ratio of each column
 // ("inf" when the smallest is 0).
 std::string rank_balance_table(const std::vector<RankCounters>& ranks);
-// The busy seconds per segment (`names`, one per key) and rank, and the busiest rank's lead over
-// the least busy, largest lead first; segments with no busy seconds are left out.
+// The busy seconds and counted work per segment (`names`, one per key) and rank, and the lead of
+// the largest counted work over the smallest, largest lead first; segments with no busy seconds
+// are left out.
 std::string busy_segment_table(const std::vector<RankCounters>& ranks,
                                const std::vector<std::string>& names);
 // One line for the run log: the max/min ratios of fluid cells, solids cells, assembly and solve

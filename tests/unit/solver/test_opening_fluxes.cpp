@@ -5,7 +5,10 @@
 // the hole face's z-row takes in, through the east face of its control volume, the cell's
 // sideways flux over the whole height (half of it, the half in the fluid cell, without the key),
 // and through its top face the flux of the cell's top face (the mean of the hole's and the top
-// face's without it). No other row changes. On 1 and 2 ranks.
+// face's without it). With the material moving down no other z-row's diagonal changes (the row
+// above the hole's takes the copied flux through its lower face, which is an outflow there).
+// The cell's west face carries an inflow too: the hole cell's west face belongs to the wall cell
+// beside it, so that flux must not be copied. On 1 and 2 ranks.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -23,6 +26,7 @@ constexpr double dt = 1e-3;                    // [s]
 constexpr double fraction = 0.5;               // ε_s everywhere
 constexpr double w_hole = -0.4, w_top = -0.2;  // w_s on the hole's face and the cell's top face [m/s]
 constexpr double u_east = -0.3;                // u_s on the east face of the cell over the hole [m/s]
+constexpr double u_west = 0.25;                // u_s on its west face [m/s]
 
 bool near(const std::array<double, 3>& x, double a, double b, double c) {
   return std::abs(x[0] - a) < 1e-12 && std::abs(x[1] - b) < 1e-12 && std::abs(x[2] - c) < 1e-12;
@@ -41,6 +45,7 @@ struct HoleRows {
         if (unknown && d == 2 && near(c.face_position(l, 2), 0.015, 0.015, 0.0)) v = w_hole;
         if (unknown && d == 2 && near(c.face_position(l, 2), 0.015, 0.015, 0.01)) v = w_top;
         if (unknown && d == 0 && near(c.face_position(l, 0), 0.02, 0.015, 0.005)) v = u_east;
+        if (unknown && d == 0 && near(c.face_position(l, 0), 0.01, 0.015, 0.005)) v = u_west;
         c.state.solids_velocity[static_cast<std::size_t>(d)][i] = v;
       }
     }

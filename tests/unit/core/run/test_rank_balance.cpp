@@ -152,9 +152,10 @@ TEST(RankBalance, PartitionByPhasesSharesOutBothKindsOfCell) {
                                                run::count_rank(by_phase.layout, state, 1e-6, {}));
   const double n = static_cast<double>(ranks.size());
   for (const auto& r : ranks) {
-    // METIS's multi-constraint tolerance is 5 %; a cell more or less on these small counts.
-    EXPECT_NEAR(r.fluid_cells, 96.0 / n, 0.06 * 96.0 / n + 1.0);
-    EXPECT_NEAR(r.solids_cells, 48.0 / n, 0.06 * 48.0 / n + 1.0) << "each rank its share of the bed";
+    // Bagnold asks METIS for 1 % per constraint (partition.cpp); a cell more or less on these
+    // small counts.
+    EXPECT_NEAR(r.fluid_cells, 96.0 / n, 0.02 * 96.0 / n + 1.0);
+    EXPECT_NEAR(r.solids_cells, 48.0 / n, 0.02 * 48.0 / n + 1.0) << "each rank its share of the bed";
   }
   // The work weights: one constraint, a solids cell weighing solids_cell_work.
   const auto work = run::partition_weights("work", box.domain, box.state, 1e-6);

@@ -22,21 +22,18 @@
 // that cost are its counted work (src/run/rank_balance.hpp), which a slower core does not
 // inflate.
 //
-// Local: nothing is communicated. Keys are small integers: the step's end, the stages
-// (log_stage.hpp) and two per linear system (its assembly, its solve) in the order they are made.
+// Local: nothing is communicated. Keys are small integers, made in the order the segments are
+// first named (the linear systems' at their construction, a stage's at its first use, the step's
+// end at the first step's), which is the same on every rank.
 
 #include <string>
 #include <vector>
 
 namespace bagnold::solver {
 
-inline constexpr int step_end_segment = 0;
-inline constexpr int stage_segment_base = 1;   // + the stage's index (Stage)
-inline constexpr int system_segment_base = 8;  // + the linear system's number
-
-// The next linear system's assembly key (systems are numbered in the order they are made),
-// named `name`; its solve's key is the next one.
-int next_system_segment(const std::string& name);
+// A new segment named `name` ("step end", "closures stage", "pressure assembly", "pressure
+// solve", …), and its key.
+int new_busy_segment(const std::string& name);
 
 // Starts counting: the time since the last mark (outside the time steps) is not counted.
 void restart_busy_segment();
@@ -47,9 +44,8 @@ void end_busy_segment(int key, double work_units);
 // holds 0).
 std::vector<double> busy_segment_seconds();
 std::vector<double> busy_segment_units();
-// A name per key, as long as busy_segment_seconds(): "step end"; a stage's ("closures stage",
-// …: what it does after its last solve); a linear system's ("pressure assembly": from the last
-// mark to its solve; "pressure solve").
+// The name of each key: a stage's segment holds what the stage does after its last solve, a
+// linear system's assembly segment what precedes its solve since the last mark.
 std::vector<std::string> busy_segment_names();
 
 }  // namespace bagnold::solver

@@ -36,11 +36,18 @@ std::vector<std::string> PetscSession::unused_options() {
   return unused;
 }
 
+namespace {
+// "pressure" for the options prefix "pressure_".
+std::string segment_name(const std::string& prefix) { return prefix.substr(0, prefix.find_last_not_of('_') + 1); }
+}  // namespace
+
 LinearSystem::LinearSystem(MPI_Comm comm, SparsityPattern pattern_in, std::int64_t first_row,
                            const std::string& prefix, const KrylovSettings& settings)
     : m_comm(comm), m_rows(pattern_in.rows()), m_first_row(first_row), m_pattern(std::move(pattern_in)),
       m_values(m_pattern.columns.size(), 0.0), m_rhs_values(static_cast<std::size_t>(m_rows), 0.0),
-      m_prefix(prefix), m_settings(settings), m_segment(next_system_segment(prefix.substr(0, prefix.find_last_not_of('_') + 1))) {
+      m_prefix(prefix), m_settings(settings),
+      m_assembly_segment(new_busy_segment(segment_name(prefix) + " assembly")),
+      m_solve_segment(new_busy_segment(segment_name(prefix) + " solve")) {
   const SparsityPattern& pattern = m_pattern;
   const auto n = static_cast<PetscInt>(m_rows);
   petsc_check(MatCreate(comm, m_matrix.out()), "MatCreate");
@@ -113,10 +120,10 @@ void LinearSystem::renew_preconditioner() { create_ksp(); }
 
 SolveReport LinearSystem::solve(std::vector<double>& x) {
   // The assembly's segment (busy_segments.hpp).
-  end_busy_segment(m_segment, m_assembly_units >= 0.0 ? m_assembly_units : static_cast<double>(m_rows));
+  end_busy_segment(m_assembly_segment, m_assembly_units >= 0.0 ? m_assembly_units : static_cast<double>(m_rows));
   m_assembly_units = -1.0;
   const SolveReport report = solve_assembled(x);
-  end_busy_segment(m_segment + 1, static_cast<double>(krylov_rows()) * (report.iterations + 1));
+  end_busy_segment(m_solve_segment, static_cast<double>(krylov_rows()) * (report.iterations + 1));
   return report;
 }
 

@@ -87,7 +87,7 @@ class LinearSystem {
   std::vector<double> m_rhs_values;
   std::string m_prefix;
   KrylovSettings m_settings;
-  int m_segment;  // this system's assembly's busy segment; its solve's is the next (busy_segments.hpp)
+  int m_assembly_segment, m_solve_segment;  // this system's busy segments (busy_segments.hpp)
   double m_assembly_units = -1.0;  // set_assembly_units for the next solve; < 0: the rows
   PetscMat m_matrix;
   PetscVec m_rhs, m_solution;

@@ -24,7 +24,14 @@ ScopedStage::ScopedStage(Stage stage, double work_units) : m_stage(stage), m_wor
 }
 ScopedStage::~ScopedStage() {
   PetscLogStagePop();
-  end_busy_segment(stage_segment_base + static_cast<int>(m_stage), m_work_units);
+  static const std::array<int, 5> segments = [] {
+    std::array<int, 5> keys{};
+    const char* names[5] = {"closures stage", "momentum stage", "pressure stage", "fraction stage",
+                            "energy stage"};
+    for (std::size_t i = 0; i < keys.size(); ++i) keys[i] = new_busy_segment(names[i]);
+    return keys;
+  }();
+  end_busy_segment(segments[static_cast<std::size_t>(m_stage)], m_work_units);
 }
 
 }  // namespace bagnold::solver

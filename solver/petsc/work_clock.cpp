@@ -27,7 +27,8 @@ ScopedWorkClock::~ScopedWorkClock() {
   }
   totals.steps += elapsed;
   totals.waits += parallel::mpi_wait_seconds() - m_wait_start;
-  end_busy_segment(step_end_segment, 1.0);
+  static const int segment = new_busy_segment("step end");
+  end_busy_segment(segment, 1.0);
 }
 
 }  // namespace bagnold::solver

@@ -86,12 +86,15 @@ void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d
   const auto& numbering = disc.velocity_numbering(d);
   const auto& carried_d = in.carried(phase, d);
   auto at = [&](int local) { return u[static_cast<std::size_t>(local)]; };
-  // The cell whose face fluxes a cell's faces carry in convection: with
-  // numerics.copy_fluxes_into_openings, a pressure opening's outside cell carries its fluid
-  // neighbour's (MFIX's SET_OUTFLOW_FLUXES), every other cell its own.
-  auto flux_cell = [&](int local) {
+  // The mass flux (per unit area and density) through the face along e that `local` stores:
+  // velocity_e times the fraction carried there; 0 for no cell. With
+  // numerics.copy_fluxes_into_openings a pressure opening's outside cell carries its fluid
+  // neighbour's instead (MFIX's SET_OUTFLOW_FLUXES).
+  auto face_flux = [&](const std::vector<double>& velocity_e, const std::vector<double>& carried_e, int local) {
+    if (local < 0) return 0.0;
     const int fluid = in.settings.copy_fluxes_into_openings ? disc.pressure_opening_fluid(local) : -1;
-    return fluid >= 0 ? fluid : local;
+    const auto at_cell = static_cast<std::size_t>(fluid >= 0 ? fluid : local);
+    return velocity_e[at_cell] * carried_e[at_cell];
   };
   auto viscosity = [&](int local) { return local >= 0 ? mu[static_cast<std::size_t>(local)] : 0.0; };
   const deck::ViscosityAverage average = in.settings.viscosity_average;
@@ -168,9 +171,8 @@ void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d
         // mass is: an empty cell above a bed's free surface brings the face below none.
         const bool has_far = link.kind == LinkKind::unknown || link.kind == LinkKind::fixed;
         const int centre = s > 0 ? n : l;
-        auto face_flux = [&](int local) { return at(flux_cell(local)) * carried_d[static_cast<std::size_t>(flux_cell(local))]; };
-        const double own = face_flux(l);
-        const double far = has_far ? face_flux(link.local) : own;
+        const double own = face_flux(u, carried_d, l);
+        const double far = has_far ? face_flux(u, carried_d, link.local) : own;
         flux_out = s * rho * row.area * 0.5 * (own + far);
         diffusion = has_far ? 2.0 * viscosity(centre) * row.area / disc.width(centre, d) : 0.0;
         if (newton && has_far) tangent = diffusion * tangent_factor(centre, d);
@@ -184,12 +186,7 @@ void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d
         // u_e on the e-faces of c and n on this side (0 where not stored), and their mass fluxes.
         const double uc_e = cv >= 0 ? v[static_cast<std::size_t>(cv)] : 0.0;
         const double un_e = nv >= 0 ? v[static_cast<std::size_t>(nv)] : 0.0;
-        auto face_flux = [&](int local) {
-          return local >= 0 ? v[static_cast<std::size_t>(flux_cell(local))] *
-                                  carried_e[static_cast<std::size_t>(flux_cell(local))]
-                            : 0.0;
-        };
-        const double vc = face_flux(cv), vn = face_flux(nv);
+        const double vc = face_flux(v, carried_e, cv), vn = face_flux(v, carried_e, nv);
         flux_out = s * rho * (vc * half_c + vn * half_n) * disc.width(l, t);
         const double area = (half_c + half_n) * disc.width(l, t);
         if (unsheared_edge(l, n, face)) {

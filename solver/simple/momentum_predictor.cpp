@@ -132,6 +132,9 @@ bool MomentumPredictor::predict(int d, const Inputs& in, run::FlowState& state,
   for (auto& v : x) v.resize(numbering.owned_locals.size());
   worst.reset(gas_momentum_x + d);
   worst.reset(solids_momentum_x + d);
+  // Both phases' rows are assembled before either solve: the first solve's assembly segment
+  // counts the gas rows and the solids rows where there are solids (busy_segments.hpp).
+  double assembly_units = 0.0;
   double explicit_stiffness_faces = 0.0;
   for (std::size_t r = 0; r < numbering.owned_locals.size(); ++r) {
     const int l = numbering.owned_locals[r];
@@ -142,6 +145,7 @@ bool MomentumPredictor::predict(int d, const Inputs& in, run::FlowState& state,
     const MomentumRow& any = g ? *g : rows[solids][r];
     if (g) sums.wall_shear[gas][ud] += g->wall_shear;
     if (s) sums.wall_shear[solids][ud] += s->wall_shear;
+    assembly_units += (g ? 1.0 : 0.0) + (s ? 1.0 : 0.0);
     const double half_c = 0.5 * disc.width(l, d), half_n = 0.5 * disc.width(n, d);
     const double beta = (beta_cells[ul] * half_n + beta_cells[static_cast<std::size_t>(n)] * half_c) / (half_c + half_n);
     const double beta_v = settings.drag ? beta * any.volume : 0.0;
@@ -260,11 +264,6 @@ bool MomentumPredictor::predict(int d, const Inputs& in, run::FlowState& state,
   }
   sums.interventions[negative_stiffness] += explicit_stiffness_faces;
 
-  // Both phases' rows were assembled before either solve: the first solve's assembly segment
-  // counts the gas rows and the solids rows where there are solids (busy_segments.hpp).
-  double assembly_units = 0.0;
-  for (std::size_t r = 0; r < numbering.owned_locals.size(); ++r)
-    assembly_units += (moves[gas] ? 1.0 : 0.0) + (moves[solids] && rows[solids][r].active ? 1.0 : 0.0);
   bool solved = true;
   for (const Phase phase : {gas, solids}) {
     if (!moves[phase]) continue;

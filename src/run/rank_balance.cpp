@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numeric>
 #include <utility>
 #include <vector>
 
@@ -38,17 +39,19 @@ RankCounters unpack(const double* v, std::size_t segments) {
 
 double at(const std::vector<double>& series, std::size_t k) { return k < series.size() ? series[k] : 0.0; }
 
-// max/min of one counter over the ranks, as text: "inf" when the smallest is 0 and the largest not.
-template <class Value>
-std::string ratio(const std::vector<RankCounters>& ranks, Value value) {
-  double smallest = value(ranks.front()), largest = smallest;
-  for (const auto& r : ranks) {
-    smallest = std::min(smallest, value(r));
-    largest = std::max(largest, value(r));
-  }
+// max/min of values over the ranks, as text: "inf" when the smallest is 0 and the largest not.
+std::string ratio(const std::vector<double>& values) {
+  const auto [low, high] = std::minmax_element(values.begin(), values.end());
+  const double smallest = *low, largest = *high;
   if (largest == 0.0) return "1.00";
   if (smallest == 0.0) return "inf";
   return fmt::format("{:.2f}", largest / smallest);
+}
+template <class Value>
+std::string ratio(const std::vector<RankCounters>& ranks, Value value) {
+  std::vector<double> values;
+  for (const auto& r : ranks) values.push_back(value(r));
+  return ratio(values);
 }
 
 double owned(const RankCounters& r) { return r.owned_cells; }
@@ -57,11 +60,7 @@ double solids(const RankCounters& r) { return r.solids_cells; }
 double assembly(const RankCounters& r) { return r.seconds.assembly; }
 double solves(const RankCounters& r) { return r.seconds.solves; }
 double waits(const RankCounters& r) { return r.seconds.waits; }
-double busy(const RankCounters& r) {
-  double total = 0.0;
-  for (const double b : r.busy_segments) total += b;
-  return total;
-}
+double busy(const RankCounters& r) { return std::accumulate(r.busy_segments.begin(), r.busy_segments.end(), 0.0); }
 
 }  // namespace
 
@@ -142,8 +141,8 @@ std::vector<RankCounters> gather_rank_counters(const parallel::Communicator& com
 std::string rank_balance_table(const std::vector<RankCounters>& ranks) {
   const auto imbalance = imbalance_wait_shares(ranks);
   const auto work = counted_work(ranks);
-  std::vector<RankCounters> work_totals = ranks;  // the counted work's total, for its max/min
-  for (std::size_t r = 0; r < ranks.size(); ++r) work_totals[r].busy_segments = work[r];
+  std::vector<double> work_totals;
+  for (const auto& w : work) work_totals.push_back(std::accumulate(w.begin(), w.end(), 0.0));
   std::string text = fmt::format("{:>8} {:>10} {:>10} {:>10} {:>12} {:>10} {:>10} {:>6} {:>8} {:>8} {:>11}\n",
                                  "rank", "cells", "fluid", "solids", "assembly/s", "solves/s",
                                  "wait/s", "wait%", "busy/s", "work/s", "imbalance%");
@@ -152,12 +151,12 @@ std::string rank_balance_table(const std::vector<RankCounters>& ranks) {
     text += fmt::format("{:>8} {:>10.0f} {:>10.0f} {:>10.0f} {:>12.2f} {:>10.2f} {:>10.2f} {:>6.1f} {:>8.2f} {:>8.2f} {:>11.1f}\n",
                         r, c.owned_cells, c.fluid_cells, c.solids_cells, c.seconds.assembly,
                         c.seconds.solves, c.seconds.waits, 100.0 * c.wait_share(), busy(c),
-                        busy(work_totals[r]), 100.0 * imbalance[r]);
+                        work_totals[r], 100.0 * imbalance[r]);
   }
   text += fmt::format("{:>8} {:>10} {:>10} {:>10} {:>12} {:>10} {:>10} {:>6} {:>8} {:>8}\n", "max/min",
                       ratio(ranks, owned), ratio(ranks, fluid), ratio(ranks, solids),
                       ratio(ranks, assembly), ratio(ranks, solves), ratio(ranks, waits), "",
-                      ratio(ranks, busy), ratio(work_totals, busy));
+                      ratio(ranks, busy), ratio(work_totals));
   text.pop_back();  // the caller ends the line
   return text;
 }

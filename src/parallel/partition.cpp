@@ -53,8 +53,8 @@ std::vector<idx_t> metis_parts(const grid::StructuredGrid& grid, const grid::Cel
   // Several constraints (numerics.partition_weights = "phases"): each within 1 % of its share
   // rather than METIS's 3 % (k-way's default), since the pressure solve, about half an outer
   // iteration's work on the bins, goes by the first (fluid cells): at 3 % the 2.5 mm bin's
-  // lighter rank waited 4.9 % of its time (docs/benchmarks.md, "The 2.5 mm bin on 2 ranks:
-  // where the waits are").
+  // fluid cells split 5.5 % unevenly (docs/benchmarks.md, "The 2.5 mm bin on 2 ranks: where the
+  // waits are").
   std::vector<real_t> tolerance(static_cast<std::size_t>(constraints), 1.01f);
   const int status = METIS_PartGraphKway(&vertices, &constraints, xadj.data(), adjncy.data(),
                                          vertex_weights.empty() ? nullptr : vertex_weights.data(),

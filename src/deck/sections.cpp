@@ -443,9 +443,14 @@ const Section<Numerics>& numerics_section() {
                "the step's outer iterations. Either converges to the same answer; which costs "
                "less depends on the case (docs/benchmarks.md, \"The pressure preconditioner\")."),
       key(&Numerics::pressure_tolerance, "pressure_tolerance").unit("-").init()
-          .within(1e-14, 0.5).doc("Relative tolerance of the pressure-correction solve."),
+          .within(1e-14, 0.5).doc("Relative tolerance of the pressure-correction solve: each "
+               "outer iteration reduces the linear residual by this factor from its value at the "
+               "current iterate. The next outer iteration assembles the system anew, so a tighter "
+               "solve changes how many outer iterations a step takes, not what it converges to "
+               "(numerics.tolerance decides that; docs/benchmarks.md, \"Linear tolerances\")."),
       key(&Numerics::momentum_tolerance, "momentum_tolerance").unit("-").init()
-          .within(1e-14, 0.5).doc("Relative tolerance of the momentum solves."),
+          .within(1e-14, 0.5).doc("Relative tolerance of the momentum solves, as "
+               "pressure_tolerance for the pressure correction."),
       key(&Numerics::momentum_preconditioner, "momentum_preconditioner").init()
           .one_of({"jacobi", "bjacobi"})
           .doc("Preconditioner of the momentum solves (BiCGStab): point Jacobi (the same on any "

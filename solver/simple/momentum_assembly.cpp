@@ -71,7 +71,7 @@ double mean_viscosity(deck::ViscosityAverage average, double a, double b) {
 void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d,
                             const run::FlowState& state, SolidsWallCoefficients* walls,
                             bool refresh_wall_coefficients, std::vector<MomentumRow>& rows,
-                            PairViscosities& pairs) {
+                            MomentumAssemblyScratch& scratch) {
   const Discretization& disc = in.discretization;
   const auto& layout = disc.layout();
   const auto ud = static_cast<std::size_t>(d);
@@ -86,15 +86,23 @@ void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d
   const auto& numbering = disc.velocity_numbering(d);
   const auto& carried_d = in.carried(phase, d);
   auto at = [&](int local) { return u[static_cast<std::size_t>(local)]; };
-  // The mass flux (per unit area and density) through the face along e that `local` stores:
-  // velocity_e times the fraction carried there; 0 for no cell. With
-  // numerics.copy_fluxes_into_openings a pressure opening's outside cell carries its fluid
-  // neighbour's instead (MFIX's SET_OUTFLOW_FLUXES).
-  auto face_flux = [&](const std::vector<double>& velocity_e, const std::vector<double>& carried_e, int local) {
-    if (local < 0) return 0.0;
-    const int fluid = in.settings.copy_fluxes_into_openings ? disc.pressure_opening_fluid(local) : -1;
-    const auto at_cell = static_cast<std::size_t>(fluid >= 0 ? fluid : local);
-    return velocity_e[at_cell] * carried_e[at_cell];
+  // The mass flux (per unit area and density) through the face along e that each local cell
+  // stores: velocity_e times the fraction carried there. With numerics.copy_fluxes_into_openings
+  // a pressure opening's outside cell carries its fluid neighbour's instead (MFIX's
+  // SET_OUTFLOW_FLUXES). face_flux gives 0 for no cell.
+  for (int e = 0; e < 3; ++e) {
+    const auto& velocity_e = velocity[static_cast<std::size_t>(e)];
+    const auto& carried_e = in.carried(phase, e);
+    auto& flux = scratch.flux[static_cast<std::size_t>(e)];
+    flux.resize(static_cast<std::size_t>(layout.local_count()));
+    for (int l = 0; l < layout.local_count(); ++l) {
+      const int fluid = in.settings.copy_fluxes_into_openings ? disc.pressure_opening_fluid(l) : -1;
+      const auto at_cell = static_cast<std::size_t>(fluid >= 0 ? fluid : l);
+      flux[static_cast<std::size_t>(l)] = velocity_e[at_cell] * carried_e[at_cell];
+    }
+  }
+  auto face_flux = [&scratch](int e, int local) {
+    return local >= 0 ? scratch.flux[static_cast<std::size_t>(e)][static_cast<std::size_t>(local)] : 0.0;
   };
   auto viscosity = [&](int local) { return local >= 0 ? mu[static_cast<std::size_t>(local)] : 0.0; };
   const deck::ViscosityAverage average = in.settings.viscosity_average;
@@ -102,7 +110,7 @@ void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d
   // The mean viscosity of each local cell and its + neighbour along d (the cell's own without
   // one), once per cell: a wall face takes its row's, an edge the mean of two rows' (each row
   // shares its cells' pair with the rows beside it).
-  auto& pair_viscosity = pairs.secant;
+  auto& pair_viscosity = scratch.secant;
   pair_viscosity.resize(static_cast<std::size_t>(layout.local_count()));
   for (int l = 0; l < layout.local_count(); ++l) {
     const int n = layout.neighbour(l, 2 * d + 1);
@@ -127,7 +135,7 @@ void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d
   if (newton)
     for (int e = 0; e < 3; ++e) {
       if (e == d) continue;
-      auto& pair = pairs.tangent[static_cast<std::size_t>(e)];
+      auto& pair = scratch.tangent[static_cast<std::size_t>(e)];
       pair.resize(static_cast<std::size_t>(layout.local_count()));
       for (int l = 0; l < layout.local_count(); ++l) {
         const int n = layout.neighbour(l, 2 * d + 1);
@@ -171,8 +179,8 @@ void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d
         // mass is: an empty cell above a bed's free surface brings the face below none.
         const bool has_far = link.kind == LinkKind::unknown || link.kind == LinkKind::fixed;
         const int centre = s > 0 ? n : l;
-        const double own = face_flux(u, carried_d, l);
-        const double far = has_far ? face_flux(u, carried_d, link.local) : own;
+        const double own = face_flux(d, l);
+        const double far = has_far ? face_flux(d, link.local) : own;
         flux_out = s * rho * row.area * 0.5 * (own + far);
         diffusion = has_far ? 2.0 * viscosity(centre) * row.area / disc.width(centre, d) : 0.0;
         if (newton && has_far) tangent = diffusion * tangent_factor(centre, d);
@@ -180,13 +188,12 @@ void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d
         // The face between the owning cells' faces along e: half of c's and half of n's.
         const int t = 3 - d - e;
         const auto& v = velocity[static_cast<std::size_t>(e)];
-        const auto& carried_e = in.carried(phase, e);
         const int cv = s > 0 ? l : layout.neighbour(l, face);
         const int nv = s > 0 ? n : layout.neighbour(n, face);
         // u_e on the e-faces of c and n on this side (0 where not stored), and their mass fluxes.
         const double uc_e = cv >= 0 ? v[static_cast<std::size_t>(cv)] : 0.0;
         const double un_e = nv >= 0 ? v[static_cast<std::size_t>(nv)] : 0.0;
-        const double vc = face_flux(v, carried_e, cv), vn = face_flux(v, carried_e, nv);
+        const double vc = face_flux(e, cv), vn = face_flux(e, nv);
         flux_out = s * rho * (vc * half_c + vn * half_n) * disc.width(l, t);
         const double area = (half_c + half_n) * disc.width(l, t);
         if (unsheared_edge(l, n, face)) {
@@ -200,7 +207,7 @@ void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d
           } else {
             const double wall_distance = 0.5 * disc.width(l, e);
             diffusion = pair_viscosity[static_cast<std::size_t>(l)] * area / wall_distance;
-            if (newton) tangent = pairs.tangent[static_cast<std::size_t>(e)][static_cast<std::size_t>(l)] * area / wall_distance;
+            if (newton) tangent = scratch.tangent[static_cast<std::size_t>(e)][static_cast<std::size_t>(l)] * area / wall_distance;
           }
         } else if (link.kind != LinkKind::zero_gradient) {
           // The edge between c, n and their neighbours m, m' across the face.
@@ -208,7 +215,7 @@ void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d
           const double edge_mu = mean(pair_viscosity[static_cast<std::size_t>(l)], pair_viscosity[static_cast<std::size_t>(m)]);
           diffusion = edge_mu * area / (0.5 * (disc.width(l, e) + disc.width(m, e)));
           if (newton) {
-            const auto& pair = pairs.tangent[static_cast<std::size_t>(e)];
+            const auto& pair = scratch.tangent[static_cast<std::size_t>(e)];
             tangent = mean(pair[static_cast<std::size_t>(l)], pair[static_cast<std::size_t>(m)]) * area /
                       (0.5 * (disc.width(l, e) + disc.width(m, e)));
           }

@@ -101,7 +101,7 @@ bool MomentumPredictor::predict(int d, const Inputs& in, run::FlowState& state,
   for (const Phase phase : {gas, solids})
     if (moves[phase])
       assemble_momentum_rows(assembly, phase, d, state, m_walls.get(), in.refresh_wall_coefficients,
-                             rows[phase], m_pair_viscosity);
+                             rows[phase], m_assembly_scratch);
 
   // The deviation normalization measures each row about the phase's mean velocity over its
   // solved rows (two collectives per phase, so only when that normalization is chosen).

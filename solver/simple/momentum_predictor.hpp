@@ -55,7 +55,7 @@ class MomentumPredictor {
   std::array<std::vector<double>, 3> m_gas_source;
   std::array<std::vector<MomentumRow>, 2> m_rows;  // scratch, per phase
   std::array<std::vector<double>, 2> m_x;          // scratch, per phase
-  PairViscosities m_pair_viscosity;                // scratch of the assembly
+  MomentumAssemblyScratch m_assembly_scratch;      // scratch of the assembly
 };
 
 }  // namespace bagnold::solver

@@ -61,12 +61,15 @@ struct MomentumAssemblyInputs {
   const std::array<std::vector<double>, 3>& gas_source;
 };
 
-// Scratch of the assembly (sized there): per local cell, the mean viscosity of the cell and its
+// Scratch of the assembly (sized there), per local cell: the mean viscosity of the cell and its
 // + neighbour along d; under numerics.viscosity_linearization = "newton" (solids), the same of
-// the tangent viscosities μ_s f_de that the faces normal to each direction e take.
-struct PairViscosities {
+// the tangent viscosities μ_s f_de that the faces normal to each direction e take; and the mass
+// flux per unit area and density through the cell's face along each e (its velocity times the
+// fraction carried there), which the rows of up to four control volumes read.
+struct MomentumAssemblyScratch {
   std::vector<double> secant;
   std::array<std::vector<double>, 3> tangent;
+  std::array<std::vector<double>, 3> flux;
 };
 
 // Fills `rows` (one per owned unknown face along d, in row order) for `phase` from the iterate
@@ -75,6 +78,6 @@ struct PairViscosities {
 void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d,
                             const run::FlowState& state, SolidsWallCoefficients* walls,
                             bool refresh_wall_coefficients, std::vector<MomentumRow>& rows,
-                            PairViscosities& pair_viscosity);
+                            MomentumAssemblyScratch& scratch);
 
 }  // namespace bagnold::solver

@@ -58,7 +58,7 @@ struct FixedClosures {
   std::vector<solver::MomentumRow> rows(int d, const run::FlowState& state) const {
     const solver::MomentumAssemblyInputs in{c.disc, c.settings, c.old, dt, fields, carried, no_source};
     std::vector<solver::MomentumRow> out;
-    solver::PairViscosities scratch;
+    solver::MomentumAssemblyScratch scratch;
     solver::assemble_momentum_rows(in, solver::solids, d, state, nullptr, true, out, scratch);
     return out;
   }

@@ -41,7 +41,7 @@ struct StressRows {
     solver::carry_all_fractions(c.disc, c.state, carried);
     const solver::MomentumAssemblyInputs in{c.disc, c.settings, c.old, dt, f, carried, no_source};
     std::vector<solver::MomentumRow> out;
-    solver::PairViscosities scratch;
+    solver::MomentumAssemblyScratch scratch;
     solver::assemble_momentum_rows(in, phase, d, c.state, nullptr, true, out, scratch);
     return out;
   }

@@ -44,7 +44,7 @@ struct Momentum {
     const std::array<std::vector<double>, 3> no_source;
     const solver::MomentumAssemblyInputs in{c.disc, c.settings, c.old, dt, fields, carried, no_source};
     std::vector<solver::MomentumRow> out;
-    solver::PairViscosities scratch;
+    solver::MomentumAssemblyScratch scratch;
     solver::assemble_momentum_rows(in, phase, d, c.state, nullptr, true, out, scratch);
     return out;
   }

@@ -54,7 +54,7 @@ struct HoleRows {
     const std::array<std::vector<double>, 3> no_source;
     solver::carry_all_fractions(c.disc, c.state, carried);
     const solver::MomentumAssemblyInputs in{c.disc, c.settings, c.old, dt, fields, carried, no_source};
-    solver::PairViscosities scratch;
+    solver::MomentumAssemblyScratch scratch;
     solver::assemble_momentum_rows(in, solids, 2, c.state, nullptr, true, rows, scratch);
   }
   Case c;

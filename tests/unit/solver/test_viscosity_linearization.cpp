@@ -86,7 +86,7 @@ TEST(ViscosityLinearization, NewtonRowsHaveThePicardResidualAtTheIterate) {
     auto rows = [&](const solver::ClosureFields& f) {
       const solver::MomentumAssemblyInputs in{c.disc, c.settings, c.old, dt, f, carried, no_source};
       std::vector<solver::MomentumRow> out;
-      solver::PairViscosities scratch;
+      solver::MomentumAssemblyScratch scratch;
       solver::assemble_momentum_rows(in, solids, d, c.state, nullptr, true, out, scratch);
       return out;
     };

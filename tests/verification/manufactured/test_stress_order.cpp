@@ -113,7 +113,7 @@ double stress_error(int n, solver::Phase phase) {
     std::vector<solver::MomentumRow> with, without;
     const solver::MomentumAssemblyInputs viscous{c.disc, c.settings, c.old, 1e-3, fields, carried, no_source};
     const solver::MomentumAssemblyInputs bare{c.disc, c.settings, c.old, 1e-3, inviscid, carried, no_source};
-    solver::PairViscosities scratch;
+    solver::MomentumAssemblyScratch scratch;
     solver::assemble_momentum_rows(viscous, phase, d, c.state, nullptr, true, with, scratch);
     solver::assemble_momentum_rows(bare, phase, d, c.state, nullptr, true, without, scratch);
     const auto& u = (phase == gas ? c.state.gas_velocity : c.state.solids_velocity)[static_cast<std::size_t>(d)];

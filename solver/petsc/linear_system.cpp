@@ -120,8 +120,8 @@ void LinearSystem::renew_preconditioner() { create_ksp(); }
 
 SolveReport LinearSystem::solve(std::vector<double>& x) {
   // The assembly's segment (busy_segments.hpp).
-  end_busy_segment(m_assembly_segment, m_assembly_units >= 0.0 ? m_assembly_units : static_cast<double>(m_rows));
-  m_assembly_units = -1.0;
+  end_busy_segment(m_assembly_segment, m_assembly_units.value_or(static_cast<double>(m_rows)));
+  m_assembly_units.reset();
   const SolveReport report = solve_assembled(x);
   end_busy_segment(m_solve_segment, static_cast<double>(krylov_rows()) * (report.iterations + 1));
   return report;

@@ -8,6 +8,7 @@
 // that the command line overrides.
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -88,7 +89,7 @@ class LinearSystem {
   std::string m_prefix;
   KrylovSettings m_settings;
   int m_assembly_segment, m_solve_segment;  // this system's busy segments (busy_segments.hpp)
-  double m_assembly_units = -1.0;  // set_assembly_units for the next solve; < 0: the rows
+  std::optional<double> m_assembly_units;  // set_assembly_units for the next solve; none: the rows
   PetscMat m_matrix;
   PetscVec m_rhs, m_solution;
   PetscKsp m_ksp;

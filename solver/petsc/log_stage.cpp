@@ -8,30 +8,35 @@
 namespace bagnold::solver {
 
 namespace {
-PetscLogStage stage_id(Stage stage) {
-  static const std::array<PetscLogStage, 5> ids = [] {
-    std::array<PetscLogStage, 5> registered{};
-    const char* names[5] = {"Closures", "Momentum", "Pressure", "VolumeFraction", "GranularEnergy"};
-    for (std::size_t i = 0; i < registered.size(); ++i) PetscLogStageRegister(names[i], &registered[i]);
-    return registered;
+constexpr std::size_t stage_count = 5;
+
+// Each stage's PETSc log stage and busy segment (busy_segments.hpp), made on first use.
+struct StageKeys {
+  PetscLogStage log_stage;
+  int busy_segment;
+};
+const StageKeys& keys(Stage stage) {
+  static const std::array<StageKeys, stage_count> all = [] {
+    std::array<StageKeys, stage_count> made{};
+    const char* log_names[stage_count] = {"Closures", "Momentum", "Pressure", "VolumeFraction", "GranularEnergy"};
+    const char* segment_names[stage_count] = {"closures stage", "momentum stage", "pressure stage",
+                                              "fraction stage", "energy stage"};
+    for (std::size_t i = 0; i < stage_count; ++i) {
+      PetscLogStageRegister(log_names[i], &made[i].log_stage);
+      made[i].busy_segment = new_busy_segment(segment_names[i]);
+    }
+    return made;
   }();
-  return ids[static_cast<std::size_t>(stage)];
+  return all[static_cast<std::size_t>(stage)];
 }
 }  // namespace
 
 ScopedStage::ScopedStage(Stage stage, double work_units) : m_stage(stage), m_work_units(work_units) {
-  PetscLogStagePush(stage_id(stage));
+  PetscLogStagePush(keys(stage).log_stage);
 }
 ScopedStage::~ScopedStage() {
   PetscLogStagePop();
-  static const std::array<int, 5> segments = [] {
-    std::array<int, 5> keys{};
-    const char* names[5] = {"closures stage", "momentum stage", "pressure stage", "fraction stage",
-                            "energy stage"};
-    for (std::size_t i = 0; i < keys.size(); ++i) keys[i] = new_busy_segment(names[i]);
-    return keys;
-  }();
-  end_busy_segment(segments[static_cast<std::size_t>(m_stage)], m_work_units);
+  end_busy_segment(keys(m_stage).busy_segment, m_work_units);
 }
 
 }  // namespace bagnold::solver

@@ -90,15 +90,16 @@ void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d
   // stores: velocity_e times the fraction carried there. With numerics.copy_fluxes_into_openings
   // a pressure opening's outside cell carries its fluid neighbour's instead (MFIX's
   // SET_OUTFLOW_FLUXES). face_flux gives 0 for no cell.
+  const bool copy_into_openings = in.settings.copy_fluxes_into_openings;
   for (int e = 0; e < 3; ++e) {
     const auto& velocity_e = velocity[static_cast<std::size_t>(e)];
     const auto& carried_e = in.carried(phase, e);
     auto& flux = scratch.flux[static_cast<std::size_t>(e)];
     flux.resize(static_cast<std::size_t>(layout.local_count()));
     for (int l = 0; l < layout.local_count(); ++l) {
-      const int fluid = in.settings.copy_fluxes_into_openings ? disc.pressure_opening_fluid(l) : -1;
-      const auto at_cell = static_cast<std::size_t>(fluid >= 0 ? fluid : l);
-      flux[static_cast<std::size_t>(l)] = velocity_e[at_cell] * carried_e[at_cell];
+      const int fluid = copy_into_openings ? disc.pressure_opening_fluid(l) : -1;
+      const auto from = static_cast<std::size_t>(fluid >= 0 ? fluid : l);
+      flux[static_cast<std::size_t>(l)] = velocity_e[from] * carried_e[from];
     }
   }
   auto face_flux = [&scratch](int e, int local) {

@@ -116,15 +116,19 @@ StepResult FlowSolver::advance(run::FlowState& state, const run::FlowState& old,
       result.residuals.value[static_cast<std::size_t>(e)] =
           sums.normalization[static_cast<std::size_t>(e)].value(sums.momentum[static_cast<std::size_t>(e)]);
     // A flow at rest has no throughput: measure against the flux the velocity scale would carry.
+    // Under the force norm the solids' sums are forces, their scale never 0
+    // (volume_fraction_correction.cpp).
     const double least_throughput = m_discretization.reference_area() * velocity_scale;
+    const bool solids_in_forces = m_settings.residual_normalization == ResidualNormalization::force;
     for (int c = 0; c < 2; ++c) {
       const auto& [imbalance, throughput] = sums.continuity[static_cast<std::size_t>(c)];
       const bool solved = c == 0 ? m_pressure != nullptr : m_fraction != nullptr;
+      const double least = c == 1 && solids_in_forces ? 1e-300 : least_throughput;
       result.residuals.value[static_cast<std::size_t>(mixture_continuity + c)] =
           !solved || imbalance <= 1e-300 ? 0.0
           : mfix ? relative_to_first(imbalance, mfix_least_imbalance * least_throughput,
                                      first_imbalance[static_cast<std::size_t>(c)])
-                 : imbalance / std::max(throughput, least_throughput);
+                 : imbalance / std::max(throughput, least);
     }
     const auto& [energy_imbalance, energy_scale] = sums.energy;
     result.residuals.value[granular_energy] =

@@ -67,6 +67,13 @@ class FlowSolver {
     m_predictor.set_gas_source(d, std::move(source));
   }
 
+  // The next step builds the pressure preconditioner afresh, as a restart from here would
+  // (numerics.pressure_preconditioner_steps): the time loop calls it after a snapshot and
+  // before a redone step.
+  void renew_preconditioners() {
+    if (m_pressure) m_pressure->renew();
+  }
+
   // Collective: the cell with the largest residual of `equation` in the last outer iteration.
   CellLocation worst_cell(int equation) const;
 

@@ -30,11 +30,19 @@ PressureCorrection::PressureCorrection(const deck::Deck& deck, const Discretizat
   pressure.constant_null_space = !discretization.faces(gas).has_pressure_boundary;
   m_system = std::make_unique<LinearSystem>(discretization.layout().comm().get(),
                                             discretization.cell_pattern(gas), numbering.first_row, "pressure_", pressure);
+  m_preconditioner_steps = deck.numerics.pressure_preconditioner_steps;
   m_x.resize(static_cast<std::size_t>(numbering.owned_rows()));
   m_correction.resize(static_cast<std::size_t>(discretization.layout().local_count()));
 }
 
-void PressureCorrection::start_step() { m_system->renew_preconditioner(); }
+void PressureCorrection::start_step() {
+  if (m_renew || m_steps_since_build >= m_preconditioner_steps) {
+    m_system->renew_preconditioner();
+    m_renew = false;
+    m_steps_since_build = 0;
+  }
+  ++m_steps_since_build;
+}
 
 bool PressureCorrection::correct(const CorrectionResponse& response, const CarriedFractions& carried,
                                  run::FlowState& state, IterationSums& sums, WorstCells& worst,

@@ -19,8 +19,12 @@ class PressureCorrection {
   PressureCorrection(const deck::Deck& deck, const Discretization& discretization,
                      const SolverSettings& settings);
 
-  // A new time step: the next solve builds its preconditioner afresh.
+  // A new time step: the next solve builds its preconditioner afresh if renew() was called
+  // since the last build, or numerics.pressure_preconditioner_steps steps have started since.
   void start_step();
+  // The next step builds the preconditioner afresh (the run's first step, after a snapshot, a
+  // redone step: where a restart would build it).
+  void renew() { m_renew = true; }
   // Corrects P and both phases' velocities in `state` from the predicted velocities, the
   // predictor's responses d_m and the carried fractions; adds the continuity residual's local
   // sums and the linear iterations. Returns false if the linear solve failed.
@@ -31,6 +35,9 @@ class PressureCorrection {
   const Discretization& m_discretization;
   const SolverSettings& m_settings;
   std::unique_ptr<LinearSystem> m_system;
+  int m_preconditioner_steps = 1;  // numerics.pressure_preconditioner_steps
+  int m_steps_since_build = 0;     // steps started with the current preconditioner
+  bool m_renew = true;
   std::vector<double> m_x, m_correction;  // scratch: owned rows, local cells
 };
 

@@ -35,6 +35,10 @@ class VolumeFractionCorrection {
  private:
   const Discretization& m_discretization;
   CompressionLimit m_limit;
+  // Under numerics.residual_normalization = "force" the residual's sums are forces
+  // (the .cpp's header): ρ_s, |g| and a_min for them.
+  bool m_force_norm = false;
+  double m_density = 0.0, m_gravity = 0.0, m_least_acceleration = 0.0;
   std::unique_ptr<LinearSystem> m_system;
   std::vector<double> m_x, m_correction;  // scratch: owned rows, local cells
 };

@@ -95,6 +95,7 @@ RunSummary run_time_loop(const TimeLoopContext& context, FlowSolver& flow, run::
       state = old;
       ++summary.redone_steps;
       controller.failed(dt_try, step);
+      flow.renew_preconditioners();
       const double dt = controller.dt();
       const std::string why =
           result.failure.empty()
@@ -150,6 +151,7 @@ RunSummary run_time_loop(const TimeLoopContext& context, FlowSolver& flow, run::
       const std::string written = context.output.write(state, time, step, dt_try, controller.dt(),
                                                        controller.memory());
       run_log.snapshot(time, written);
+      flow.renew_preconditioners();  // where a restart from this snapshot builds it
       const auto& comm = context.domain.layout.comm();
       if (comm.size() > 1) {
         const auto ranks = run::gather_rank_counters(comm, rank_counters(context.domain, state));

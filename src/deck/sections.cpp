@@ -439,9 +439,18 @@ const Section<Numerics>& numerics_section() {
       key(&Numerics::pressure_preconditioner, "pressure_preconditioner").init()
           .one_of({"hypre", "gamg"})
           .doc("Algebraic multigrid for the pressure correction: hypre BoomerAMG or PETSc GAMG, "
-               "built afresh at each time step (so either restarts bit-exactly) and kept over "
-               "the step's outer iterations. Either converges to the same answer; which costs "
-               "less depends on the case (docs/benchmarks.md, \"The pressure preconditioner\")."),
+               "built afresh in a new solver object at the steps pressure_preconditioner_steps "
+               "says (so either restarts bit-exactly) and kept over the outer iterations between. "
+               "Either converges to the same answer; which costs less depends on the case "
+               "(docs/benchmarks.md, \"The pressure preconditioner\")."),
+      key(&Numerics::pressure_preconditioner_steps, "pressure_preconditioner_steps").init()
+          .within(1, 1000)
+          .doc("How many time steps one build of the pressure preconditioner serves: it is "
+               "built afresh at the first step, every this many steps, after every snapshot and "
+               "for a redone step, and its later solves take it with their own matrix. A restart "
+               "from a snapshot therefore builds where the run continued past it did, and stays "
+               "bit-exact. It changes how many iterations a pressure solve takes to "
+               "pressure_tolerance, not what the step converges to."),
       key(&Numerics::pressure_tolerance, "pressure_tolerance").unit("-").init()
           .within(1e-14, 0.5).doc("Relative tolerance of the pressure-correction solve: each "
                "outer iteration reduces the linear residual by this factor from its value at the "

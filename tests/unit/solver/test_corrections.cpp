@@ -278,19 +278,23 @@ TEST(VolumeFractionCorrection, ConservesSolidsAndCorrectsVelocitiesByE) {
   EXPECT_GT(k.record.linear_iterations[solver::fraction_system], 0.0);
 }
 
-// R_P = (ε_P − ε_P^old) V/dt + Σ_faces A ε_up u_out of every owned fluid cell, largest |R_P|.
+// R_P = (ε_P − ε_P^old) V/dt + Σ_faces A ε_up u_out of owned fluid cell l, with the fractions
+// carried as they are now.
+double solids_residual(const Corrections& k, int l, double dt) {
+  const auto i = static_cast<std::size_t>(l);
+  double r = (k.c.state.solids_fraction[i] - k.c.old.solids_fraction[i]) * k.c.disc.volume(l) / dt;
+  solver::for_each_cell_face(k.c.disc, l, [&](const CellFace& f) {
+    const auto o = static_cast<std::size_t>(f.owner);
+    r += f.sign * f.area * k.carried(solids, f.direction)[o] * k.c.state.solids_velocity[static_cast<std::size_t>(f.direction)][o];
+  });
+  return r;
+}
+
+// The largest |R_P| over every rank's owned fluid cells.
 double largest_solids_residual(Corrections& k, double dt) {
   solver::carry_all_fractions(k.c.disc, k.c.state, k.carried);
   double largest = 0.0;
-  for (int l = 0; l < k.c.owned_fluid(); ++l) {
-    const auto i = static_cast<std::size_t>(l);
-    double r = (k.c.state.solids_fraction[i] - k.c.old.solids_fraction[i]) * k.c.disc.volume(l) / dt;
-    solver::for_each_cell_face(k.c.disc, l, [&](const CellFace& f) {
-      const auto o = static_cast<std::size_t>(f.owner);
-      r += f.sign * f.area * k.carried(solids, f.direction)[o] * k.c.state.solids_velocity[static_cast<std::size_t>(f.direction)][o];
-    });
-    largest = std::max(largest, std::abs(r));
-  }
+  for (int l = 0; l < k.c.owned_fluid(); ++l) largest = std::max(largest, std::abs(solids_residual(k, l, dt)));
   return k.c.max(largest);
 }
 
@@ -307,6 +311,46 @@ TEST(VolumeFractionCorrection, WithoutSolidsPressureOneCorrectionSolvesTheLinear
   ASSERT_TRUE(correction.correct(k.c.old, dt, k.fields, k.response, k.carried, k.c.state, k.sums, k.worst, k.record));
   EXPECT_GT(before, 1e-6);
   EXPECT_LT(largest_solids_residual(k, dt), 1e-7 * before);
+}
+
+TEST(VolumeFractionCorrection, UnderTheForceNormTheResidualIsTheForceOfTheFractionError) {
+  // Solids about the plastic closure's ε_s* = 0.6 (K = dP_s/dε_s 0 below it, up to ~10¹¹ Pa
+  // above): the residual's sums are Σ δε (K A_max + ρ_s V |g|), δε = |R_P| dt/V, and
+  // Σ ρ_s V (ε_s |g| + a_min), computed here from the iterate before the correction.
+  const double dt = 1e-3;
+  Corrections k(closed_box("residual_normalization = \"force\"\n"), stretched);
+  set_fractions(k.c, 0.595, 0.01);
+  k.c.old = k.c.state;
+  for (int l = 0; l < k.c.local_count(); ++l)
+    if (k.c.fluid(l)) k.c.state.solids_fraction[static_cast<std::size_t>(l)] += 0.004 * wiggle(k.c.centre(l), 8.0);
+  Case::complete_gas_fraction(k.c.state);
+  k.predicted_field(0.05);
+  k.closures.evaluate(k.c.disc, k.c.state, k.c.old, dt, k.fields);
+  solver::carry_all_fractions(k.c.disc, k.c.state, k.carried);
+  const auto& settings = k.c.settings;
+  const double rho = settings.density[solids], g = settings.gravity_magnitude;
+  double stiffness_part = 0.0, weight_part = 0.0, scale = 0.0;
+  for (int l = 0; l < k.c.owned_fluid(); ++l) {
+    const auto i = static_cast<std::size_t>(l);
+    const double volume = k.c.disc.volume(l);
+    double largest_area = 0.0;
+    solver::for_each_cell_face(k.c.disc, l, [&](const CellFace& f) { largest_area = std::max(largest_area, f.area); });
+    const double fraction_error = std::abs(solids_residual(k, l, dt)) * dt / volume;
+    stiffness_part += fraction_error * std::max(k.fields.pressure_derivative[i], 0.0) * largest_area;
+    weight_part += fraction_error * rho * volume * g;
+    scale += rho * volume * (k.c.state.solids_fraction[i] * g + settings.least_acceleration);
+  }
+  stiffness_part = k.c.sum(stiffness_part);
+  weight_part = k.c.sum(weight_part);
+  scale = k.c.sum(scale);
+  EXPECT_GT(stiffness_part, 10.0 * weight_part);  // the packed cells' P_s error dominates
+  solver::VolumeFractionCorrection correction(k.c.disc, settings, k.closures);
+  ASSERT_TRUE(correction.correct(k.c.old, dt, k.fields, k.response, k.carried, k.c.state, k.sums, k.worst, k.record))
+      << k.record.failure;
+  auto total = k.sums;
+  total.reduce(k.c.layout().comm());
+  EXPECT_NEAR(total.continuity[1][0], stiffness_part + weight_part, 1e-12 * (stiffness_part + weight_part));
+  EXPECT_NEAR(total.continuity[1][1], scale, 1e-12 * scale);
 }
 
 TEST(VolumeFractionCorrection, StationaryStateHasZeroResidualAndStays) {

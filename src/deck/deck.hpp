@@ -159,7 +159,7 @@ struct Numerics {
   double pressure_shear_rate_relaxation_time = 0.0;  // τ_P [s]: P_s at γ̇ relaxed over τ_P
   double relax_pressure = 1.0;           // α_p (SIMPLE needs about 0.3)
   std::string pressure_preconditioner = "hypre";  // hypre | gamg
-  int pressure_preconditioner_steps = 20;  // time steps one multigrid hierarchy serves
+  int pressure_preconditioner_steps = 1;  // time steps one multigrid hierarchy serves
   double pressure_tolerance = 1e-2;      // relative, per outer iteration
   double momentum_tolerance = 1e-2;      // relative, per outer iteration
   std::string momentum_preconditioner = "jacobi";  // jacobi | bjacobi

@@ -67,9 +67,9 @@ class FlowSolver {
     m_predictor.set_gas_source(d, std::move(source));
   }
 
-  // The next step builds the pressure preconditioner afresh, as a restart from here would
-  // (numerics.pressure_preconditioner_steps): the time loop calls it after a snapshot and
-  // before a redone step.
+  // The next step builds the pressure preconditioner afresh (numerics.pressure_preconditioner_steps):
+  // the time loop calls it after a snapshot, where a restart from it builds its own, and before a
+  // redone step, which then gets a hierarchy of its own matrix.
   void renew_preconditioners() {
     if (m_pressure) m_pressure->renew();
   }

@@ -85,8 +85,8 @@ bool PressureCorrection::correct(const CorrectionResponse& response, const Carri
 
   std::fill(m_x.begin(), m_x.end(), 0.0);
   const SolveReport report = m_system->solve(m_x);
-  // The multigrid hierarchy is built on the step's first outer iteration and reused by the later
-  // ones (the matrix changes only through d); rebuilding it dominated the run time.
+  // The multigrid hierarchy built by a solve is reused by the later ones until start_step()
+  // renews it: within a step the matrix changes only through d.
   m_system->keep_preconditioner();
   record.linear_iterations[pressure_system] += report.iterations;
   std::fill(m_correction.begin(), m_correction.end(), 0.0);

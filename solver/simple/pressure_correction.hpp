@@ -22,8 +22,8 @@ class PressureCorrection {
   // A new time step: the next solve builds its preconditioner afresh if renew() was called
   // since the last build, or numerics.pressure_preconditioner_steps steps have started since.
   void start_step();
-  // The next step builds the preconditioner afresh (the run's first step, after a snapshot, a
-  // redone step: where a restart would build it).
+  // The next step builds the preconditioner afresh: after a snapshot, where a restart from it
+  // builds its own, and for a redone step, which gets a hierarchy of its own matrix.
   void renew() { m_renew = true; }
   // Corrects P and both phases' velocities in `state` from the predicted velocities, the
   // predictor's responses d_m and the carried fractions; adds the continuity residual's local

@@ -56,7 +56,9 @@ const char* linear_system_name(int kind);  // the monitor column
 struct IterationSums {
   std::array<MomentumResidual::Sums, 6> momentum{};      // per momentum Equation
   std::array<MomentumResidual, 6> normalization{};       // how each turns into a residual
-  std::array<std::array<double, 2>, 2> continuity{};     // mixture, solids: {Σ|R|, Σ ½|Q|}
+  // mixture, solids: {Σ|R|, Σ ½|Q|}; the solids' in forces under the "force" norm
+  // (volume_fraction_correction.cpp)
+  std::array<std::array<double, 2>, 2> continuity{};
   std::array<double, 2> energy{};                        // granular energy: {Σ|R|, its scale}
   std::array<double, intervention_count> interventions{};
   std::array<std::array<double, 3>, 2> wall_shear{};    // the walls' tangential force [N], per phase and d

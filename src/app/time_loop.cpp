@@ -73,7 +73,8 @@ RunSummary run_time_loop(const TimeLoopContext& context, FlowSolver& flow, run::
 
   while (time < end - tiny) {
     // Only the last step is shortened, to land on run.end_time; a snapshot is written at the end
-    // of the first step that reaches its scheduled time, so the schedule never changes the answer.
+    // of the first step that reaches its scheduled time, so the schedule does not change the
+    // answer (beyond the outer tolerance when numerics.pressure_preconditioner_steps > 1).
     const double dt_try = std::min(controller.dt(), end - time);
     old = state;
     const StepResult result = flow.advance(state, old, dt_try, run::signal_received);

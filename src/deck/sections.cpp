@@ -294,7 +294,9 @@ const Section<Numerics>& numerics_section() {
           .doc("What each momentum residual Σ|s − L u| is measured against. force: the forces "
                "that act on each control volume (weight, pressure, P_s, drag, wall stress), so a "
                "step passes only when the momentum equations hold to the tolerance times those "
-               "forces and no viscosity or short step can hide an unbalanced one. velocity-scale: "
+               "forces and no viscosity or short step can hide an unbalanced one; the solids "
+               "continuity too, as the force its fraction error makes through dP_s/dε_s and the "
+               "weight (docs/solver.md, \"Convergence and time step\"). velocity-scale: "
                "Σ a_P U (U the largest velocity), which a large μ_s inflates. deviation: "
                "Σ(|Lu − L1 ū| + |s − L1 ū|) (OpenFOAM's), which a short step inflates. mfix: "
                "MFIX 21.3's test, to compare with MFIX at its tol_resid: Σ|A| |u| (MFIX's "
@@ -449,8 +451,9 @@ const Section<Numerics>& numerics_section() {
                "built afresh at the first step, every this many steps, after every snapshot and "
                "for a redone step, and its later solves take it with their own matrix. A restart "
                "from a snapshot builds where the run continued past it did, and stays bit-exact. "
-               "It changes how many iterations a pressure solve takes to pressure_tolerance, not "
-               "what a step converges to; but above 1 the steps on which it is built depend on "
+               "It changes how many iterations a pressure solve takes to pressure_tolerance, and "
+               "so the outer iterations' path within the outer tolerance (the 5 mm bin drained "
+               "0.07 % slower over another dt path); above 1 the steps on which it is built depend on "
                "when snapshots are written, so two runs with different snapshot schedules (or one "
                "stopped by a signal and restarted) agree to the outer tolerance, not to the bit. "
                "20 saves 14 % of the CPU time of MFIX's 5 mm bin deck (docs/benchmarks.md, \"The "
@@ -500,7 +503,8 @@ const Section<Output>& output_section() {
           .doc("Simulated time between HDF5 snapshots. Each is written at the end of the first step that "
                "reaches its scheduled time, at that step's time: steps are not shortened for "
                "output, so the schedule does not change the answer (the final step lands on "
-               "run.end_time)."),
+               "run.end_time); with numerics.pressure_preconditioner_steps above 1 it moves the "
+               "answer within the outer tolerance."),
       key(&Output::progress, "progress").init().one_of({"auto", "always", "never"})
           .doc("The progress line (simulated time, dt, outer iterations, time left). auto: "
                "redrawn in place on stderr when stderr is a terminal, else a plain line on "

@@ -1,5 +1,6 @@
 #!/bin/sh
-# The snapshot schedule does not change the answer: the 10 mm bin discharging to 0.1 s with
+# The snapshot schedule does not change the answer (with the pressure preconditioner built every
+# step, numerics.pressure_preconditioner_steps = 1): the 10 mm bin discharging to 0.1 s with
 # snapshots every 0.02 s and every 0.05 s takes the same steps (identical monitors) and ends in
 # identical fields. Each snapshot is written at the end of the first step past its time.
 #   snapshot_schedule.sh BAGNOLD WORK_DIR

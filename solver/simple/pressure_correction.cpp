@@ -31,14 +31,14 @@ PressureCorrection::PressureCorrection(const deck::Deck& deck, const Discretizat
   m_system = std::make_unique<LinearSystem>(discretization.layout().comm().get(),
                                             discretization.cell_pattern(gas), numbering.first_row, "pressure_", pressure);
   m_preconditioner_steps = deck.numerics.pressure_preconditioner_steps;
+  renew();
   m_x.resize(static_cast<std::size_t>(numbering.owned_rows()));
   m_correction.resize(static_cast<std::size_t>(discretization.layout().local_count()));
 }
 
 void PressureCorrection::start_step() {
-  if (m_renew || m_steps_since_build >= m_preconditioner_steps) {
+  if (m_steps_since_build >= m_preconditioner_steps) {
     m_system->renew_preconditioner();
-    m_renew = false;
     m_steps_since_build = 0;
   }
   ++m_steps_since_build;

@@ -24,7 +24,7 @@ class PressureCorrection {
   void start_step();
   // The next step builds the preconditioner afresh: after a snapshot, where a restart from it
   // builds its own, and for a redone step, which gets a hierarchy of its own matrix.
-  void renew() { m_renew = true; }
+  void renew() { m_steps_since_build = m_preconditioner_steps; }
   // Corrects P and both phases' velocities in `state` from the predicted velocities, the
   // predictor's responses d_m and the carried fractions; adds the continuity residual's local
   // sums and the linear iterations. Returns false if the linear solve failed.
@@ -36,8 +36,9 @@ class PressureCorrection {
   const SolverSettings& m_settings;
   std::unique_ptr<LinearSystem> m_system;
   int m_preconditioner_steps = 1;  // numerics.pressure_preconditioner_steps
-  int m_steps_since_build = 0;     // steps started with the current preconditioner
-  bool m_renew = true;
+  // Steps started with the current preconditioner; at m_preconditioner_steps the next step
+  // builds it (renew() sets it there, and so does the constructor).
+  int m_steps_since_build = 0;
   std::vector<double> m_x, m_correction;  // scratch: owned rows, local cells
 };
 

@@ -39,10 +39,7 @@ namespace bagnold::solver {
 VolumeFractionCorrection::VolumeFractionCorrection(const Discretization& discretization,
                                                    const SolverSettings& settings,
                                                    const Closures& closures)
-    : m_discretization(discretization), m_limit(discretization, settings, closures),
-      m_force_norm(settings.residual_normalization == ResidualNormalization::force),
-      m_density(settings.density[solids]), m_gravity(settings.gravity_magnitude),
-      m_least_acceleration(settings.least_acceleration) {
+    : m_discretization(discretization), m_settings(settings), m_limit(discretization, settings, closures) {
   const auto& numbering = discretization.cell_numbering();
   // BiCGStab with block Jacobi (KrylovSettings' defaults): convection makes it non-symmetric.
   const KrylovSettings fraction{.relative_tolerance = linear_relative_tolerance,
@@ -73,6 +70,8 @@ bool VolumeFractionCorrection::correct(const run::FlowState& old, double dt,
                : 0.0;
   };
   worst.reset(solids_continuity);
+  const bool force_norm = m_settings.residual_normalization == ResidualNormalization::force;
+  const double rho = m_settings.density[solids], g = m_settings.gravity_magnitude;
 
   double imbalance = 0.0, throughput = 0.0;
   for (const int l : numbering.owned_locals) {
@@ -80,7 +79,7 @@ bool VolumeFractionCorrection::correct(const run::FlowState& old, double dt,
     const double v_dt = disc.volume(l) / dt;
     double a_p = v_dt;
     double b = -(eps[ul] - old.solids_fraction[ul]) * v_dt;
-    double largest_area = 0.0, face_flux = 0.0;
+    double face_flux = 0.0;
     std::int64_t columns[7];
     double values[7];
     int count = 0;
@@ -89,7 +88,6 @@ bool VolumeFractionCorrection::correct(const run::FlowState& old, double dt,
       const double u_face = f.of(u), u_out = f.sign * u_face;
       b -= f.area * eps_up * u_out;
       face_flux += 0.5 * std::abs(f.area * eps_up * u_out);
-      largest_area = std::max(largest_area, f.area);
       if (f.of(kind) != FaceClass::unknown) return;
       // Upwind as carried_fraction decides: the owner when u >= 0.
       const bool upwind_is_l = (u_face >= 0.0) == (f.sign > 0);
@@ -106,11 +104,12 @@ bool VolumeFractionCorrection::correct(const run::FlowState& old, double dt,
         values[count++] = off;
       }
     });
-    if (m_force_norm) {
+    if (force_norm) {
       const double volume = disc.volume(l), fraction_error = std::abs(b) * dt / volume;
-      const double force = fraction_error * (stiffness(l) * largest_area + m_density * volume * m_gravity);
+      const double largest_area = std::max({disc.face_area(l, 0), disc.face_area(l, 1), disc.face_area(l, 2)});
+      const double force = fraction_error * (stiffness(l) * largest_area + rho * volume * g);
       imbalance += force;
-      throughput += m_density * volume * (std::max(eps[ul], 0.0) * m_gravity + m_least_acceleration);
+      throughput += rho * volume * (std::max(eps[ul], 0.0) * g + m_settings.least_acceleration);
       worst.record(solids_continuity, force, l);
     } else {
       imbalance += std::abs(b);

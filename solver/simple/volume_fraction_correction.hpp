@@ -9,6 +9,7 @@
 #include "solver/petsc/linear_system.hpp"
 #include "solver/simple/compression_limit.hpp"
 #include "solver/simple/iteration_fields.hpp"
+#include "solver/simple/solver_settings.hpp"
 #include "solver/simple/step_record.hpp"
 #include "src/run/flow_state.hpp"
 
@@ -34,11 +35,8 @@ class VolumeFractionCorrection {
 
  private:
   const Discretization& m_discretization;
+  const SolverSettings& m_settings;  // the residual's norm, and ρ_s, |g|, a_min for its forces
   CompressionLimit m_limit;
-  // Under numerics.residual_normalization = "force" the residual's sums are forces
-  // (the .cpp's header): ρ_s, |g| and a_min for them.
-  bool m_force_norm = false;
-  double m_density = 0.0, m_gravity = 0.0, m_least_acceleration = 0.0;
   std::unique_ptr<LinearSystem> m_system;
   std::vector<double> m_x, m_correction;  // scratch: owned rows, local cells
 };

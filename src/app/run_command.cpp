@@ -127,7 +127,7 @@ int run_command(const DeckArguments& args) {
     // One segment per partition: the run's start, then one after each repartition, which
     // continues from the snapshot the last segment ended with.
     for (bool first_segment = true;; first_segment = false) {
-      // The state on the partition by fluid cells; with numerics.partition_weights = "work" or
+      // The state on the partition by fluid cells or by layers; with numerics.partition_weights = "work" or
       // "phases" on more than one rank (or after a repartition), the partition weighted by that
       // state (work_weights.hpp), and the state again on it.
       if (!repartition.empty()) partition_by_state(std::exchange(repartition, {}));
@@ -145,10 +145,14 @@ int run_command(const DeckArguments& args) {
             return first_segment ? bad_input : run_failed;
           }
         }
-        if (weighted || deck.numerics.partition_weights == "cells" || comm.size() == 1) break;
+        if (weighted || deck.numerics.partition_weights == "cells" ||
+            deck.numerics.partition_weights == "layers" || comm.size() == 1)
+          break;
         partition_by_state(run::partition_weights(weighing, *prepared.domain, state, solver::solids_threshold));
       }
       const parallel::Domain& domain = *prepared.domain;
+      if (first_segment && deck.numerics.partition_weights == "layers" && comm.size() > 1)
+        say(run::partition_text(std::string("layers across ") + "xyz"[deck.physics.gravity_axis()], domain, {}));
       if (first_segment && !snapshot.empty()) {
         // The snapshot's next dt, kept within the deck's limits: a restart with a new dt_max or
         // dt_min obeys them from its first step.

@@ -163,7 +163,7 @@ struct Numerics {
   double pressure_tolerance = 1e-2;      // relative, per outer iteration
   double momentum_tolerance = 1e-2;      // relative, per outer iteration
   std::string momentum_preconditioner = "jacobi";  // jacobi | bjacobi
-  std::string partition_weights = "cells";  // cells | work | phases
+  std::string partition_weights = "cells";  // cells | work | phases | layers
   double repartition_imbalance = 0.0;  // 0: off; else repartition by work above this imbalance
 };
 

@@ -411,6 +411,24 @@ void check_time_stepping(const toml::table& root, Deck& deck, Diagnostics& diag)
   }
 }
 
+// numerics.partition_weights = "layers" cuts along gravity, which must act along one axis, and
+// does not depend on the state, so there is nothing to repartition.
+void check_partition(const toml::table& root, const Deck& deck, Diagnostics& diag) {
+  const auto* numerics = root.get_as<toml::table>("numerics");
+  if (!numerics || deck.numerics.partition_weights != "layers") return;
+  const toml::node* node = numerics->get("partition_weights");
+  if (deck.physics.gravity_axis() < 0)
+    diag.error(node->source(), "numerics.partition_weights",
+               "partition_weights = \"layers\" needs gravity along one axis (physics.gravity has " +
+                   to_toml_text(deck.physics.gravity) + "); expected cells, work or phases");
+  if (deck.numerics.repartition_imbalance > 0.0) {
+    const toml::node* other = numerics->get("repartition_imbalance");
+    diag.error(other ? other->source() : numerics->source(), "numerics.repartition_imbalance",
+               "expected 0 with partition_weights = \"layers\" (a partition by layers does not "
+               "depend on the state), got " + to_toml_text(deck.numerics.repartition_imbalance));
+  }
+}
+
 // The selected closure's own limits on the material (the kinetic models need e < 1, ...): found
 // by evaluating it once, at ε_s = 0.3 and γ̇ = 1/s, so `check` refuses what `run` would.
 void check_closure_material(const toml::table* solids, const Deck& deck, Diagnostics& diag) {
@@ -545,6 +563,7 @@ void read_all(const toml::table& root, Deck& deck, Diagnostics& diag) {
   check_pressure_probes(root, deck, diag);
   read_section(subtable(root, "numerics", "numerics", diag), numerics_section(), "numerics",
                deck.numerics, diag);
+  check_partition(root, deck, diag);
   read_section(subtable(root, "output", "output", diag), output_section(), "output", deck.output,
                diag, root.source());
   check_time_stepping(root, deck, diag);

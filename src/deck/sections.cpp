@@ -473,12 +473,19 @@ const Section<Numerics>& numerics_section() {
                "number of ranks, and no factorization per solve) or block Jacobi with ILU(0) on "
                "each rank's block. Either changes how a solve reaches momentum_tolerance, not "
                "what it converges to."),
-      key(&Numerics::partition_weights, "partition_weights").init().one_of({"cells", "work", "phases"})
+      key(&Numerics::partition_weights, "partition_weights").init()
+          .one_of({"cells", "work", "phases", "layers"})
           .doc("What the partition over ranks balances: fluid cells; work (a fluid cell "
-               "holding solids weighs as much as it costs against a gas-only one); or phases "
+               "holding solids weighs as much as it costs against a gas-only one); phases "
                "(each rank its share of the fluid cells and of the cells holding solids, so that "
-               "the gas steps and the solids steps of the outer iteration are each balanced). "
-               "The last two from the initial state or the restart snapshot's."),
+               "the gas steps and the solids steps of the outer iteration are each balanced); "
+               "or layers (each layer of cells across gravity split evenly over the ranks, cut "
+               "along gravity: a bed that fills the domain from the bottom gives every rank its "
+               "share of the bed and of the gas above at any fill level; needs gravity along one "
+               "axis). Work and phases are weighed from the initial state or the restart "
+               "snapshot's, so a restart on more than one rank agrees with the run it continues "
+               "to the solver tolerance; cells and layers come from the geometry alone, and a "
+               "restart on as many ranks is bit-identical."),
       key(&Numerics::repartition_imbalance, "repartition_imbalance").unit("-").init()
           .within(0.0, 10.0)
           .doc("On more than one rank, 0: the partition stays as the run started. x > 0: at each "
@@ -488,7 +495,8 @@ const Section<Numerics>& numerics_section() {
                "the domain anew from the current state (by phases under partition_weights = "
                "\"phases\", else by work) and continue from the snapshot just written, which carries the state "
                "to its new owners. It moves cells between ranks, not the equations: the "
-               "continuation agrees with one on the old partition to the solver tolerance."),
+               "continuation agrees with one on the old partition to the solver tolerance. Not "
+               "with partition_weights = \"layers\", which does not depend on the state."),
   }};
   return s;
 }

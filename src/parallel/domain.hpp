@@ -1,6 +1,7 @@
 #pragma once
 // Everything a run builds from the deck before any field exists: the grid, the cell flags, the
-// boundary regions, the partition (by fluid cells, or by given weights) and this rank's layout.
+// boundary regions, the partition (by fluid cells, by given weights, or by layers across gravity
+// under numerics.partition_weights = "layers") and this rank's layout.
 // Collective over the communicator.
 
 #include <vector>
@@ -15,7 +16,7 @@ namespace bagnold::parallel {
 
 struct Domain {
   Domain(const deck::Deck& deck, const Communicator& comm);
-  // Partitioned by these weights of the fluid cells (partition.hpp).
+  // Partitioned by these weights of the fluid cells (partition.hpp); by layers, the weights unused.
   Domain(const deck::Deck& deck, const Communicator& comm, const PartitionWeights& weights);
   Domain(const Domain&) = delete;  // the layout points at the grid
   Domain& operator=(const Domain&) = delete;

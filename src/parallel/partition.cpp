@@ -3,8 +3,13 @@
 #include <metis.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
 #include <stdexcept>
 #include <string>
+#include <tuple>
+#include <utility>
 
 namespace bagnold::parallel {
 
@@ -65,38 +70,38 @@ std::vector<idx_t> metis_parts(const grid::StructuredGrid& grid, const grid::Cel
     throw std::runtime_error("METIS_PartGraphKway failed with status " + std::to_string(status));
   return part;
 }
-}  // namespace
 
-std::vector<int> partition_cells(const grid::StructuredGrid& grid, const grid::CellFlags& flags,
-                                 int parts, const PartitionWeights& weights) {
+// The fluid cells in natural order, and each one's vertex number (-1 for the other cells).
+struct FluidCells {
+  std::vector<std::int64_t> cells;
+  std::vector<idx_t> vertex_of;
+};
+
+FluidCells fluid_cells_of(const grid::StructuredGrid& grid, const grid::CellFlags& flags, int parts) {
   const auto n = static_cast<std::size_t>(grid.extended_cell_count());
-  std::vector<int> owner(n, -1);
-  std::vector<std::int64_t> fluid_cells;
-  std::vector<idx_t> vertex_of(n, -1);
+  FluidCells fluid{{}, std::vector<idx_t>(n, -1)};
   for (std::size_t c = 0; c < n; ++c)
     if (flags.kind[c] == CellKind::fluid) {
-      vertex_of[c] = static_cast<idx_t>(fluid_cells.size());
-      fluid_cells.push_back(static_cast<std::int64_t>(c));
+      fluid.vertex_of[c] = static_cast<idx_t>(fluid.cells.size());
+      fluid.cells.push_back(static_cast<std::int64_t>(c));
     }
-  if (fluid_cells.empty())
+  if (fluid.cells.empty())
     throw grid::GeometryError("the geometry blocks every cell of the domain: nothing can flow");
-  if (parts > static_cast<int>(fluid_cells.size()))
+  if (parts > static_cast<int>(fluid.cells.size()))
     throw grid::GeometryError("more ranks (" + std::to_string(parts) + ") than fluid cells (" +
-                             std::to_string(fluid_cells.size()) + ")");
-  if (parts > 1) {
-    const auto part = metis_parts(grid, flags, fluid_cells, vertex_of, parts, weights);
-    for (std::size_t v = 0; v < fluid_cells.size(); ++v)
-      owner[static_cast<std::size_t>(fluid_cells[v])] = static_cast<int>(part[v]);
-  } else {
-    for (const auto c : fluid_cells) owner[static_cast<std::size_t>(c)] = 0;
-  }
-  // Boundary cells: the owner of a face-adjacent fluid cell (the cell that uses the boundary
-  // value), else of the first fluid cell across an edge or corner.
+                             std::to_string(fluid.cells.size()) + ")");
+  return fluid;
+}
+
+// Boundary cells: the owner of a face-adjacent fluid cell (the cell that uses the boundary
+// value), else of the first fluid cell across an edge or corner.
+void give_boundary_cells_owners(const grid::StructuredGrid& grid, const grid::CellFlags& flags,
+                                std::vector<int>& owner) {
   std::vector<Index3> offsets(std::begin(face_offsets), std::end(face_offsets));
   for (int dk = -1; dk <= 1; ++dk)
     for (int dj = -1; dj <= 1; ++dj)
       for (int di = -1; di <= 1; ++di) offsets.push_back({di, dj, dk});
-  for (std::size_t c = 0; c < n; ++c) {
+  for (std::size_t c = 0; c < owner.size(); ++c) {
     if (flags.kind[c] != CellKind::boundary) continue;
     const Index3 ijk = grid.index3(static_cast<std::int64_t>(c));
     for (const auto& offset : offsets) {
@@ -109,6 +114,90 @@ std::vector<int> partition_cells(const grid::StructuredGrid& grid, const grid::C
       }
     }
   }
+}
+
+// Recursive coordinate bisection of one layer's fluid cells [begin, end) over the parts
+// [first, first + count): cut across the longer of the layer's two axes, the cells on each side
+// in proportion to its parts. `carry` holds, per node of the bisection (its first part and
+// count), how far the cuts of the layers before fell short of the ideal, so that the rounding
+// of many small layers does not add up on one side.
+class LayerBisection {
+ public:
+  LayerBisection(const grid::StructuredGrid& grid, int axis, std::vector<int>& owner)
+      : m_grid(grid), m_across{axis == 0 ? 1 : 0, axis == 2 ? 1 : 2}, m_owner(owner) {}
+
+  void split(std::vector<std::int64_t>::iterator begin, std::vector<std::int64_t>::iterator end,
+             int first, int count) {
+    if (begin == end) return;
+    if (count == 1) {
+      for (auto c = begin; c != end; ++c) m_owner[static_cast<std::size_t>(*c)] = first;
+      return;
+    }
+    int low[2] = {std::numeric_limits<int>::max(), std::numeric_limits<int>::max()};
+    int high[2] = {std::numeric_limits<int>::min(), std::numeric_limits<int>::min()};
+    for (auto c = begin; c != end; ++c) {
+      const Index3 ijk = m_grid.index3(*c);
+      for (int a = 0; a < 2; ++a) {
+        low[a] = std::min(low[a], ijk[static_cast<std::size_t>(m_across[a])]);
+        high[a] = std::max(high[a], ijk[static_cast<std::size_t>(m_across[a])]);
+      }
+    }
+    const int along = high[1] - low[1] > high[0] - low[0] ? 1 : 0;
+    const auto cut_axis = static_cast<std::size_t>(m_across[along]);
+    const auto other_axis = static_cast<std::size_t>(m_across[1 - along]);
+    std::sort(begin, end, [&](std::int64_t a, std::int64_t b) {
+      const Index3 p = m_grid.index3(a), q = m_grid.index3(b);
+      return std::tie(p[cut_axis], p[other_axis]) < std::tie(q[cut_axis], q[other_axis]);
+    });
+    const int left = count / 2;
+    const auto cells = static_cast<double>(end - begin);
+    double& carry = m_carry[{first, count}];
+    const double ideal = cells * left / count + carry;
+    const auto taken = static_cast<std::ptrdiff_t>(std::clamp(std::round(ideal), 0.0, cells));
+    carry = ideal - static_cast<double>(taken);
+    split(begin, begin + taken, first, left);
+    split(begin + taken, end, first + left, count - left);
+  }
+
+ private:
+  const grid::StructuredGrid& m_grid;
+  int m_across[2];
+  std::vector<int>& m_owner;
+  std::map<std::pair<int, int>, double> m_carry;
+};
+}  // namespace
+
+std::vector<int> partition_cells(const grid::StructuredGrid& grid, const grid::CellFlags& flags,
+                                 int parts, const PartitionWeights& weights) {
+  const FluidCells fluid = fluid_cells_of(grid, flags, parts);
+  std::vector<int> owner(static_cast<std::size_t>(grid.extended_cell_count()), -1);
+  if (parts > 1) {
+    const auto part = metis_parts(grid, flags, fluid.cells, fluid.vertex_of, parts, weights);
+    for (std::size_t v = 0; v < fluid.cells.size(); ++v)
+      owner[static_cast<std::size_t>(fluid.cells[v])] = static_cast<int>(part[v]);
+  } else {
+    for (const auto c : fluid.cells) owner[static_cast<std::size_t>(c)] = 0;
+  }
+  give_boundary_cells_owners(grid, flags, owner);
+  return owner;
+}
+
+std::vector<int> partition_cells_by_layers(const grid::StructuredGrid& grid,
+                                           const grid::CellFlags& flags, int parts, int axis) {
+  const FluidCells fluid = fluid_cells_of(grid, flags, parts);
+  std::vector<int> owner(static_cast<std::size_t>(grid.extended_cell_count()), -1);
+  std::map<int, std::vector<std::int64_t>> layers;  // by index along the axis
+  for (const auto c : fluid.cells) layers[grid.index3(c)[static_cast<std::size_t>(axis)]].push_back(c);
+  LayerBisection bisection(grid, axis, owner);
+  for (auto& [index, cells] : layers) bisection.split(cells.begin(), cells.end(), 0, parts);
+  std::vector<std::int64_t> owned(static_cast<std::size_t>(parts), 0);
+  for (const auto c : fluid.cells) ++owned[static_cast<std::size_t>(owner[static_cast<std::size_t>(c)])];
+  for (int r = 0; r < parts; ++r)
+    if (owned[static_cast<std::size_t>(r)] == 0)
+      throw grid::GeometryError("numerics.partition_weights = \"layers\" leaves rank " + std::to_string(r) +
+                                " of " + std::to_string(parts) + " without a fluid cell: the layers across " +
+                                std::string(1, "xyz"[axis]) + " hold fewer fluid cells than there are ranks");
+  give_boundary_cells_owners(grid, flags, owner);
   return owner;
 }
 

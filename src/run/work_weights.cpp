@@ -43,7 +43,7 @@ std::string partition_text(const std::string& kind, const parallel::Domain& doma
   const std::int64_t fluid = layout.owned_fluid_count();
   std::vector<std::string> parts;
   if (kind != "phases") parts.push_back(fmt::format("fluid cells per rank {}..{}", comm.min(fluid), comm.max(fluid)));
-  for (int c = 0; c < weights.constraints; ++c) {
+  for (int c = 0; c < (weights.empty() ? 0 : weights.constraints); ++c) {
     std::int64_t sum = 0;
     for (int l = 0; l < layout.owned_fluid_count(); ++l) sum += weights.at(layout.natural(l), c);
     const std::int64_t total = comm.sum(sum);

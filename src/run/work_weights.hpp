@@ -29,7 +29,8 @@ parallel::PartitionWeights partition_weights(const std::string& kind, const para
                                              const FlowState& state, double solids_threshold);
 
 // "partition by work: fluid cells per rank 5120..7680, work per rank 81920..82560 (imbalance
-// 0.4 %)" for `weights` (of `kind`) on `domain`; by phases, each constraint's range. Collective.
+// 0.4 %)" for `weights` (of `kind`) on `domain`; by phases, each constraint's range; without
+// weights (a partition by layers), the fluid cells' range alone. Collective.
 std::string partition_text(const std::string& kind, const parallel::Domain& domain,
                            const parallel::PartitionWeights& weights);
 

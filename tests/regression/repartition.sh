@@ -10,7 +10,8 @@ set -eu
 bagnold=$1; mpirun=$2; work=$3
 common="--set run.end_time=0.02 --set output.progress=never --set output.snapshot_interval=0.005
         --set models.solids_stress.model=plastic --set numerics.tolerance=1e-6
-        --set numerics.pressure_tolerance=1e-10 --set numerics.momentum_tolerance=1e-10"
+        --set numerics.pressure_tolerance=1e-10 --set numerics.momentum_tolerance=1e-10
+        --set numerics.partition_weights=cells"
 rm -rf "$work"; mkdir -p "$work"
 for limit in 0 0.05; do
   $mpirun --oversubscribe -np 2 $bagnold run cases/bin/bin-10mm.toml $common \

@@ -740,6 +740,23 @@ TEST(DeckErrors, BedWeightPressureNeedsGravityAlongOneAxis) {
   EXPECT_TRUE(contains(e.message, "needs gravity along one axis")) << e.message;
 }
 
+TEST(DeckErrors, PartitionByLayersNeedsGravityAlongOneAxisAndNoRepartition) {
+  const std::string text = deck_text(
+      "[physics]\ngravity = [1.0, 0.0, -9.81]\n"
+      "[numerics]\npartition_weights = \"layers\"\nrepartition_imbalance = 0.2\n");
+  const auto errors = errors_of(text);
+  ASSERT_EQ(errors.size(), 2u) << report_of(errors);
+  const auto weights = error_on(errors, "numerics.partition_weights");
+  EXPECT_EQ(weights.line, line_of(text, "partition_weights"));
+  EXPECT_TRUE(contains(weights.message, "needs gravity along one axis")) << weights.message;
+  const auto repartition = error_on(errors, "numerics.repartition_imbalance");
+  EXPECT_EQ(repartition.line, line_of(text, "repartition_imbalance"));
+  EXPECT_TRUE(contains(repartition.message, "does not depend on the state")) << repartition.message;
+  EXPECT_EQ(deck::load_deck_text(deck_text("[numerics]\npartition_weights = \"layers\"\n"), "deck.toml")
+                .numerics.partition_weights,
+            "layers");
+}
+
 TEST(DeckErrors, LayerProbeNeedsTheGravityAxisNotPeriodic) {
   const std::string text = deck_text(
       "[grid]\nperiodic = [\"z\"]\n"

@@ -31,17 +31,26 @@ const std::string hopper_extra =
     "[grid]\nperiodic = [\"y\"]\n"
     "[[geometry.block]]\nshape = \"half_space\"\npoint = [0.06, 0.0, 0.0]\n"
     "normal = [1.0, 0.0, -1.0]\n";
+const std::string by_layers = "[numerics]\npartition_weights = \"layers\"\n";
 
-TEST(Layout, EveryStoredCellIsOwnedExactlyOnce) {
-  Built s(box_deck(8, 4, 10, hopper_extra));
+// The layout's properties hold on either partition: by the fluid-cell graph (METIS) and by layers
+// across gravity.
+class Layout : public ::testing::TestWithParam<std::string> {};
+INSTANTIATE_TEST_SUITE_P(Partitions, Layout, ::testing::Values("", by_layers),
+                         [](const ::testing::TestParamInfo<std::string>& partition) {
+                           return partition.param.empty() ? "graph" : "layers";
+                         });
+
+TEST_P(Layout, EveryStoredCellIsOwnedExactlyOnce) {
+  Built s(box_deck(8, 4, 10, hopper_extra + GetParam()));
   const parallel::Communicator comm;
   const auto owned = comm.sum(std::int64_t{s.layout.owned_count()});
   EXPECT_EQ(owned, s.flags.fluid_count + s.flags.boundary_count);
   EXPECT_EQ(s.layout.global_fluid_count(), s.flags.fluid_count);
 }
 
-TEST(Layout, GlobalFluidNumberingIsContiguousPerRank) {
-  Built s(box_deck(8, 4, 10, hopper_extra));
+TEST_P(Layout, GlobalFluidNumberingIsContiguousPerRank) {
+  Built s(box_deck(8, 4, 10, hopper_extra + GetParam()));
   const parallel::Communicator comm;
   const auto offsets = comm.all_gather(s.layout.global_fluid_offset());
   const auto counts = comm.all_gather(std::int64_t{s.layout.owned_fluid_count()});
@@ -52,8 +61,8 @@ TEST(Layout, GlobalFluidNumberingIsContiguousPerRank) {
     EXPECT_EQ(s.layout.global_fluid_index(l), s.layout.global_fluid_offset() + l);
 }
 
-TEST(Layout, HaloHoldsEveryStoredCellWithinTwoCells) {
-  Built s(box_deck(8, 4, 10, hopper_extra));
+TEST_P(Layout, HaloHoldsEveryStoredCellWithinTwoCells) {
+  Built s(box_deck(8, 4, 10, hopper_extra + GetParam()));
   const auto& g = s.grid;
   for (int l = 0; l < s.layout.owned_count(); ++l) {
     const auto ijk = s.layout.index3(l);
@@ -69,8 +78,8 @@ TEST(Layout, HaloHoldsEveryStoredCellWithinTwoCells) {
   }
 }
 
-TEST(Layout, HaloValuesEqualTheOwnersValues) {
-  Built s(box_deck(8, 4, 10, hopper_extra));
+TEST_P(Layout, HaloValuesEqualTheOwnersValues) {
+  Built s(box_deck(8, 4, 10, hopper_extra + GetParam()));
   // Each rank fills its owned cells with a function of the natural index, halo with garbage.
   std::vector<double> field(static_cast<std::size_t>(s.layout.local_count()), -1.0);
   std::vector<int> ranks(field.size(), -1);
@@ -88,8 +97,8 @@ TEST(Layout, HaloValuesEqualTheOwnersValues) {
   }
 }
 
-TEST(Layout, NeighbourTableFollowsTheGrid) {
-  Built s(box_deck(8, 4, 10, hopper_extra));
+TEST_P(Layout, NeighbourTableFollowsTheGrid) {
+  Built s(box_deck(8, 4, 10, hopper_extra + GetParam()));
   for (int l = 0; l < s.layout.owned_count(); ++l) {
     const auto ijk = s.layout.index3(l);
     const int east = s.layout.neighbour(l, parallel::east);
@@ -109,6 +118,60 @@ TEST(Partition, BalancedWithinFivePercent) {
   const auto mine = std::int64_t{s.layout.owned_fluid_count()};
   const double mean = static_cast<double>(s.flags.fluid_count) / comm.size();
   EXPECT_LE(static_cast<double>(comm.max(mine)), 1.05 * mean);
+}
+
+// Per rank, the fluid cells of each layer across z (from the replicated owner table).
+std::vector<std::vector<int>> fluid_cells_per_layer_and_rank(const Built& s, int ranks) {
+  std::vector<std::vector<int>> count(static_cast<std::size_t>(s.grid.cells(2)),
+                                      std::vector<int>(static_cast<std::size_t>(ranks), 0));
+  for (std::size_t n = 0; n < s.owner.size(); ++n)
+    if (s.flags.kind[n] == CellKind::fluid)
+      ++count[static_cast<std::size_t>(s.grid.index3(static_cast<std::int64_t>(n))[2])]
+             [static_cast<std::size_t>(s.owner[n])];
+  return count;
+}
+
+TEST(Partition, ByLayersGivesEveryRankItsShareOfEveryLayerAndOfAll) {
+  Built s(box_deck(9, 7, 12, hopper_extra + by_layers));  // layers of 63 cells down to 0
+  const int ranks = parallel::Communicator().size();
+  std::vector<int> total(static_cast<std::size_t>(ranks), 0);
+  for (const auto& layer : fluid_cells_per_layer_and_rank(s, ranks)) {
+    int cells = 0;
+    for (const int c : layer) cells += c;
+    for (int r = 0; r < ranks; ++r) {
+      EXPECT_LE(std::abs(layer[static_cast<std::size_t>(r)] - static_cast<double>(cells) / ranks), 2.0);
+      total[static_cast<std::size_t>(r)] += layer[static_cast<std::size_t>(r)];
+    }
+  }
+  for (const int t : total) EXPECT_LE(std::abs(t - static_cast<double>(s.flags.fluid_count) / ranks), 2.0);
+}
+
+TEST(Partition, ByLayersCutsAlongGravityInABox) {
+  Built s(box_deck(6, 5, 8, by_layers));
+  for (std::size_t n = 0; n < s.owner.size(); ++n) {
+    if (s.flags.kind[n] != CellKind::fluid) continue;
+    grid::Index3 above;
+    if (!s.grid.step(s.grid.index3(static_cast<std::int64_t>(n)), {0, 0, 1}, above)) continue;
+    const auto m = static_cast<std::size_t>(s.grid.natural(above));
+    if (s.flags.kind[m] == CellKind::fluid) {
+      EXPECT_EQ(s.owner[m], s.owner[n]) << "cell " << n;
+    }
+  }
+}
+
+TEST(Partition, ByLayersCutsAcrossTheLongerSideOfALayer) {
+  Built s(box_deck(4, 9, 3, by_layers));
+  const int ranks = parallel::Communicator().size();
+  if (ranks != 2) GTEST_SKIP() << "one cut: 2 ranks";
+  for (std::size_t n = 0; n < s.owner.size(); ++n)
+    if (s.flags.kind[n] == CellKind::fluid) {
+      const int j = s.grid.index3(static_cast<std::int64_t>(n))[1];
+      if (j < 4) {
+        EXPECT_EQ(s.owner[n], 0);
+      } else if (j > 4) {
+        EXPECT_EQ(s.owner[n], 1);
+      }
+    }
 }
 
 }  // namespace

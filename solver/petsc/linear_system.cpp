@@ -109,6 +109,14 @@ void LinearSystem::create_ksp() {
   // The outer iteration hands over a good guess: reduce its residual by the relative tolerance
   // (PETSc's default measures against ||b||, which stalls the outer loop near that tolerance).
   petsc_check(KSPConvergedDefaultSetUIRNorm(m_ksp.get()), "KSPConvergedDefaultSetUIRNorm");
+  for (const auto& [name, value] : m_settings.default_options) {
+    PetscBool given = PETSC_FALSE;
+    petsc_check(PetscOptionsHasName(nullptr, m_prefix.c_str(), ("-" + name).c_str(), &given),
+                "PetscOptionsHasName");
+    if (!given)
+      petsc_check(PetscOptionsSetValue(nullptr, ("-" + m_prefix + name).c_str(), value.c_str()),
+                  "PetscOptionsSetValue");
+  }
   petsc_check(KSPSetFromOptions(m_ksp.get()), "KSPSetFromOptions");
 }
 

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "solver/petsc/handle.hpp"
@@ -29,6 +30,9 @@ struct KrylovSettings {
   // values as known (moved to the other rows' right-hand sides). Only the coupled rows cost
   // Krylov work; the answer is the same system's.
   bool solve_decoupled_rows_directly = false;
+  // PETSc options under the system's prefix, without it and its dash ({"pc_hypre_boomeramg_agg_nl",
+  // "1"}), that hold unless the command line or PETSC_OPTIONS gives the same option.
+  std::vector<std::pair<std::string, std::string>> default_options;
 };
 
 struct SolveReport {

@@ -34,7 +34,8 @@ GranularEnergyEquation::GranularEnergyEquation(const Discretization& discretizat
   // BiCGStab with block Jacobi (KrylovSettings' defaults): convection makes it non-symmetric.
   const KrylovSettings energy{.relative_tolerance = linear_relative_tolerance,
                              .absolute_tolerance = linear_absolute_tolerance,
-                             .solve_decoupled_rows_directly = true};
+                             .solve_decoupled_rows_directly = true,
+                             .default_options = {}};
   m_system = std::make_unique<LinearSystem>(discretization.layout().comm().get(),
                                             discretization.cell_pattern(solids),
                                             numbering.first_row, "granular_energy_", energy);

@@ -44,7 +44,8 @@ VolumeFractionCorrection::VolumeFractionCorrection(const Discretization& discret
   // BiCGStab with block Jacobi (KrylovSettings' defaults): convection makes it non-symmetric.
   const KrylovSettings fraction{.relative_tolerance = linear_relative_tolerance,
                              .absolute_tolerance = linear_absolute_tolerance,
-                             .solve_decoupled_rows_directly = true};
+                             .solve_decoupled_rows_directly = true,
+                             .default_options = {}};
   m_system = std::make_unique<LinearSystem>(discretization.layout().comm().get(),
                                             discretization.cell_pattern(solids), numbering.first_row, "solids_fraction_", fraction);
   m_x.resize(static_cast<std::size_t>(numbering.owned_rows()));

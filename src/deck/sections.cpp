@@ -440,7 +440,9 @@ const Section<Numerics>& numerics_section() {
           .doc("Under-relaxation of the pressure correction, α_p."),
       key(&Numerics::pressure_preconditioner, "pressure_preconditioner").init()
           .one_of({"hypre", "gamg"})
-          .doc("Algebraic multigrid for the pressure correction: hypre BoomerAMG or PETSc GAMG, "
+          .doc("Algebraic multigrid for the pressure correction: hypre BoomerAMG (HMIS "
+               "coarsening, extended+i interpolation with at most 4 entries per row, one level of "
+               "aggressive coarsening; -pressure_pc_hypre_boomeramg_* options override each) or PETSc GAMG, "
                "built afresh in a new solver object at the steps pressure_preconditioner_steps "
                "says (so either restarts bit-exactly) and kept over the outer iterations between. "
                "Either converges to the same answer; which costs less depends on the case "

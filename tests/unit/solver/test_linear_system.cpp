@@ -149,5 +149,25 @@ TEST(LinearSystem, DecoupledRowWithZeroDiagonalFailsTheSolve) {
   EXPECT_FALSE(direct.solve(x).converged);  // on every rank
 }
 
+// KrylovSettings::default_options reach the KSP (here: at most 2 iterations, where the chain
+// needs more to 1e-13), unless the options database already holds the same option.
+TEST(LinearSystem, DefaultOptionsHoldUnlessGiven) {
+  const Chain chain;
+  KrylovSettings settings = tight(false);
+  settings.pc_type = "none";  // block Jacobi's ILU(0) of a chain is exact
+  settings.default_options = {{"ksp_max_it", "2"}};
+  const auto iterations = [&](const char* prefix) {
+    LinearSystem system(MPI_COMM_WORLD, chain.pattern(), chain.first, prefix, settings);
+    chain.fill(system, [](std::int64_t) { return false; }, [](std::int64_t) { return 0.0; });
+    std::vector<double> x(rows_per_rank, 0.0);
+    return system.solve(x).iterations;
+  };
+  EXPECT_EQ(iterations("test_defaults_"), 2);
+  ASSERT_EQ(PetscOptionsSetValue(nullptr, "-test_given_ksp_max_it", "500"), 0);
+  EXPECT_GT(iterations("test_given_"), 2);
+  PetscOptionsClearValue(nullptr, "-test_given_ksp_max_it");
+  PetscOptionsClearValue(nullptr, "-test_defaults_ksp_max_it");
+}
+
 }  // namespace
 }  // namespace bagnold::tests

@@ -31,7 +31,9 @@ struct KrylovSettings {
   // Krylov work; the answer is the same system's.
   bool solve_decoupled_rows_directly = false;
   // PETSc options under the system's prefix, without it and its dash ({"pc_hypre_boomeramg_agg_nl",
-  // "1"}), that hold unless the command line or PETSC_OPTIONS gives the same option.
+  // "1"}), for pc_type: they hold unless the command line or PETSC_OPTIONS gives the same option
+  // or another preconditioner, and never stay in PETSc's options database. One that PETSc does
+  // not read (misspelled) throws std::logic_error when the KSP is made.
   std::vector<std::pair<std::string, std::string>> default_options;
 };
 
@@ -72,6 +74,7 @@ class LinearSystem {
 
  private:
   void create_ksp();  // (re)creates the KSP with the settings and the command-line options
+  void apply_default_options(PC pc);  // KrylovSettings::default_options, after KSPSetFromOptions
   SolveReport solve_assembled(std::vector<double>& x);  // solve() after its busy segment's mark
   // KSPSolve of matrix · solution = rhs with m_ksp; a solution with Inf or NaN recreates the KSP.
   SolveReport run_ksp(Mat matrix, Vec rhs, Vec solution);

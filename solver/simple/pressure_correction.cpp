@@ -19,6 +19,13 @@
 
 namespace bagnold::solver {
 
+std::vector<std::pair<std::string, std::string>> boomeramg_options() {
+  return {{"pc_hypre_boomeramg_coarsen_type", "HMIS"},
+          {"pc_hypre_boomeramg_interp_type", "ext+i"},
+          {"pc_hypre_boomeramg_P_max", "4"},
+          {"pc_hypre_boomeramg_agg_nl", "1"}};
+}
+
 PressureCorrection::PressureCorrection(const deck::Deck& deck, const Discretization& discretization,
                                        const SolverSettings& settings)
     : m_discretization(discretization), m_settings(settings) {
@@ -28,18 +35,7 @@ PressureCorrection::PressureCorrection(const deck::Deck& deck, const Discretizat
   pressure.pc_type = deck.numerics.pressure_preconditioner;
   pressure.relative_tolerance = deck.numerics.pressure_tolerance;
   pressure.constant_null_space = !discretization.faces(gas).has_pressure_boundary;
-  // BoomerAMG as hypre's users' guide advises for 3-D problems: HMIS coarsening, extended+i
-  // interpolation with at most 4 entries per row, and one level of aggressive coarsening. More
-  // CG iterations than PETSc's defaults (Falgout coarsening, classical interpolation), each far
-  // cheaper: on the 2.5 mm bin on 2 ranks, cut along gravity (numerics.partition_weights =
-  // "layers"), the pressure's preconditioner applications take 0.37 of the time
-  // (docs/benchmarks.md, "The pressure multigrid's coarsening"). -pressure_pc_hypre_boomeramg_*
-  // options override each.
-  if (pressure.pc_type == "hypre")
-    pressure.default_options = {{"pc_hypre_boomeramg_coarsen_type", "HMIS"},
-                                {"pc_hypre_boomeramg_interp_type", "ext+i"},
-                                {"pc_hypre_boomeramg_P_max", "4"},
-                                {"pc_hypre_boomeramg_agg_nl", "1"}};
+  if (pressure.pc_type == "hypre") pressure.default_options = boomeramg_options();
   m_system = std::make_unique<LinearSystem>(discretization.layout().comm().get(),
                                             discretization.cell_pattern(gas), numbering.first_row, "pressure_", pressure);
   m_preconditioner_steps = deck.numerics.pressure_preconditioner_steps;

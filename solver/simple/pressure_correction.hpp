@@ -3,6 +3,8 @@
 // (pressure_correction.cpp).
 
 #include <memory>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "solver/discretization.hpp"
@@ -13,6 +15,16 @@
 #include "src/run/flow_state.hpp"
 
 namespace bagnold::solver {
+
+// The pressure's BoomerAMG settings under numerics.pressure_preconditioner = "hypre" (PETSc
+// option names without the "pressure_" prefix): HMIS coarsening, extended+i interpolation with at
+// most 4 entries per row, and one level of aggressive coarsening, as hypre's users' guide advises
+// for 3-D problems, with its strong threshold left at 0.25 (0.5 cost more here). More CG
+// iterations than PETSc's defaults (Falgout coarsening, classical interpolation), each far
+// cheaper: on the 2.5 mm bin on 2 ranks cut along gravity the preconditioner's applications take
+// 0.37 of the time (docs/benchmarks.md, "The pressure multigrid's coarsening").
+// -pressure_pc_hypre_boomeramg_* options override each.
+std::vector<std::pair<std::string, std::string>> boomeramg_options();
 
 class PressureCorrection {
  public:

@@ -117,8 +117,9 @@ void give_boundary_cells_owners(const grid::StructuredGrid& grid, const grid::Ce
 }
 
 // Recursive coordinate bisection of one layer's fluid cells [begin, end) over the parts
-// [first, first + count): cut across the longer of the layer's two axes, the cells on each side
-// in proportion to its parts. `carry` holds, per node of the bisection (its first part and
+// [first, first + count): cut across the axis along which they span more cells (the first of the
+// two on a tie; on a periodic axis a cut makes two interfaces), the cells on each side in
+// proportion to its parts. `carry` holds, per node of the bisection (its first part and
 // count), how far the cuts of the layers before fell short of the ideal, so that the rounding
 // of many small layers does not add up on one side.
 class LayerBisection {
@@ -195,8 +196,8 @@ std::vector<int> partition_cells_by_layers(const grid::StructuredGrid& grid,
   for (int r = 0; r < parts; ++r)
     if (owned[static_cast<std::size_t>(r)] == 0)
       throw grid::GeometryError("numerics.partition_weights = \"layers\" leaves rank " + std::to_string(r) +
-                                " of " + std::to_string(parts) + " without a fluid cell: the layers across " +
-                                std::string(1, "xyz"[axis]) + " hold fewer fluid cells than there are ranks");
+                                " of " + std::to_string(parts) + " without a fluid cell: the domain has too few fluid cells "
+                                "per layer across " + std::string(1, "xyz"[axis]) + " for that many ranks");
   give_boundary_cells_owners(grid, flags, owner);
   return owner;
 }

@@ -7,9 +7,11 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <stdexcept>
 #include <vector>
 
 #include "solver/petsc/linear_system.hpp"
+#include "solver/simple/pressure_correction.hpp"
 #include "tests/support/petsc_environment.hpp"
 
 namespace bagnold::tests {
@@ -150,8 +152,8 @@ TEST(LinearSystem, DecoupledRowWithZeroDiagonalFailsTheSolve) {
 }
 
 // KrylovSettings::default_options reach the KSP (here: at most 2 iterations, where the chain
-// needs more to 1e-13), unless the options database already holds the same option.
-TEST(LinearSystem, DefaultOptionsHoldUnlessGiven) {
+// needs more to 1e-13) unless the options database holds the same option, and never stay in it.
+TEST(LinearSystem, DefaultOptionsHoldUnlessGivenAndLeaveNoTrace) {
   const Chain chain;
   KrylovSettings settings = tight(false);
   settings.pc_type = "none";  // block Jacobi's ILU(0) of a chain is exact
@@ -163,10 +165,35 @@ TEST(LinearSystem, DefaultOptionsHoldUnlessGiven) {
     return system.solve(x).iterations;
   };
   EXPECT_EQ(iterations("test_defaults_"), 2);
-  ASSERT_EQ(PetscOptionsSetValue(nullptr, "-test_given_ksp_max_it", "500"), 0);
-  EXPECT_GT(iterations("test_given_"), 2);
+  PetscBool left = PETSC_TRUE;
+  PetscOptionsHasName(nullptr, nullptr, "-test_defaults_ksp_max_it", &left);
+  EXPECT_FALSE(left);
+  PetscOptionsSetValue(nullptr, "-test_given_ksp_max_it", "500");
+  const int given = iterations("test_given_");
   PetscOptionsClearValue(nullptr, "-test_given_ksp_max_it");
-  PetscOptionsClearValue(nullptr, "-test_defaults_ksp_max_it");
+  EXPECT_GT(given, 2);
+  // Another preconditioner chosen on the command line: the defaults are not for it.
+  PetscOptionsSetValue(nullptr, "-test_other_pc_type", "jacobi");
+  const int other = iterations("test_other_");
+  PetscOptionsClearValue(nullptr, "-test_other_pc_type");
+  EXPECT_GT(other, 2);
+}
+
+// The pressure's BoomerAMG options are all read by hypre (a misspelled one throws), and a CG
+// with them solves the chain.
+TEST(LinearSystem, PressureBoomerAmgOptionsAreHypres) {
+  const Chain chain;
+  KrylovSettings settings = tight(false);
+  settings.ksp_type = "cg";
+  settings.pc_type = "hypre";
+  settings.default_options = solver::boomeramg_options();
+  LinearSystem system(MPI_COMM_WORLD, chain.pattern(), chain.first, "test_amg_", settings);
+  chain.fill(system, [](std::int64_t) { return false; }, [](std::int64_t) { return 0.0; });
+  std::vector<double> x(rows_per_rank, 0.0);
+  EXPECT_TRUE(system.solve(x).converged);
+  settings.default_options.emplace_back("pc_hypre_boomeramg_coarsen_typo", "HMIS");
+  EXPECT_THROW(LinearSystem(MPI_COMM_WORLD, chain.pattern(), chain.first, "test_typo_", settings),
+               std::logic_error);
 }
 
 }  // namespace

@@ -146,15 +146,24 @@ TEST(Partition, ByLayersGivesEveryRankItsShareOfEveryLayerAndOfAll) {
   for (const int t : total) EXPECT_LE(std::abs(t - static_cast<double>(s.flags.fluid_count) / ranks), 2.0);
 }
 
-TEST(Partition, ByLayersCutsAlongGravityInABox) {
-  Built s(box_deck(6, 5, 8, by_layers));
-  for (std::size_t n = 0; n < s.owner.size(); ++n) {
-    if (s.flags.kind[n] != CellKind::fluid) continue;
-    grid::Index3 above;
-    if (!s.grid.step(s.grid.index3(static_cast<std::int64_t>(n)), {0, 0, 1}, above)) continue;
-    const auto m = static_cast<std::size_t>(s.grid.natural(above));
-    if (s.flags.kind[m] == CellKind::fluid) {
-      EXPECT_EQ(s.owner[m], s.owner[n]) << "cell " << n;
+// Layers of 6 × 4 cells, which 1, 2 and 3 ranks cut into whole rows: the cut is a plane along
+// gravity.
+TEST(Partition, ByLayersCutsAlongGravityWhicheverAxisItActsAlong) {
+  const char* gravity[3] = {"[-9.81, 0.0, 0.0]", "[0.0, -9.81, 0.0]", "[0.0, 0.0, -9.81]"};
+  const int cells[3][3] = {{5, 6, 4}, {6, 5, 4}, {6, 4, 5}};
+  for (int axis = 0; axis < 3; ++axis) {
+    const auto& size = cells[axis];
+    Built s(box_deck(size[0], size[1], size[2], "[physics]\ngravity = " + std::string(gravity[axis]) + "\n" + by_layers));
+    grid::Index3 along{0, 0, 0};
+    along[static_cast<std::size_t>(axis)] = 1;
+    for (std::size_t n = 0; n < s.owner.size(); ++n) {
+      if (s.flags.kind[n] != CellKind::fluid) continue;
+      grid::Index3 next;
+      if (!s.grid.step(s.grid.index3(static_cast<std::int64_t>(n)), along, next)) continue;
+      const auto m = static_cast<std::size_t>(s.grid.natural(next));
+      if (s.flags.kind[m] == CellKind::fluid) {
+        EXPECT_EQ(s.owner[m], s.owner[n]) << "gravity along " << axis << ", cell " << n;
+      }
     }
   }
 }

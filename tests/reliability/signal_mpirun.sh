@@ -9,7 +9,7 @@ set -u
 bagnold=$1; mpirun=$2; signal=$3; target=$4; work=$5
 deck=cases/bin/bin-5mm.toml
 # A tolerance of 1e-9: about 25 outer iterations, over a second, per step. The pressure
-# preconditioner built every step (the default, set here in case the deck changes it): the final snapshot
+# preconditioner built every step (the default; the deck keeps it 20 steps): the final snapshot
 # would otherwise make the restart build it where the run never stopped did not.
 common="--set output.progress=never --set output.snapshot_interval=100 --set numerics.tolerance=1e-9 --set numerics.max_outer_iterations=400 --set numerics.pressure_preconditioner_steps=1"
 rm -rf "$work"; mkdir -p "$work"

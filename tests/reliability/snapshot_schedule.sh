@@ -8,9 +8,8 @@ set -eu
 bagnold=$1; work=$2
 deck=cases/bin/bin-10mm.toml
 rm -rf "$work"
-# A pressure preconditioner kept over several steps is built again after each snapshot; only a
-# build every step (the default, set here in case the deck changes it) makes the schedule leave
-# no trace.
+# The deck keeps its pressure preconditioner for 20 steps but builds it again after each
+# snapshot; only a build every step (the default) makes the schedule leave no trace.
 for interval in 0.02 0.05; do
   $bagnold run $deck --set run.end_time=0.1 --set output.progress=never \
     --set numerics.pressure_preconditioner_steps=1 \

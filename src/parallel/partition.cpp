@@ -117,9 +117,9 @@ void give_boundary_cells_owners(const grid::StructuredGrid& grid, const grid::Ce
 }
 
 // Recursive coordinate bisection of one layer's fluid cells [begin, end) over the parts
-// [first, first + count): cut across the axis along which they span more cells (the first of the
-// two on a tie; on a periodic axis a cut makes two interfaces), the cells on each side in
-// proportion to its parts. `carry` holds, per node of the bisection (its first part and
+// [first, first + count): cut across the axis along which they span more cells (on a tie the
+// first of the two, unless it is periodic and the other not: across a periodic axis the parts
+// meet at both ends), the cells on each side in proportion to its parts. `carry` holds, per node of the bisection (its first part and
 // count), how far the cuts of the layers before fell short of the ideal, so that the rounding
 // of many small layers does not add up on one side.
 class LayerBisection {
@@ -143,7 +143,10 @@ class LayerBisection {
         high[a] = std::max(high[a], ijk[static_cast<std::size_t>(m_across[a])]);
       }
     }
-    const int along = high[1] - low[1] > high[0] - low[0] ? 1 : 0;
+    // On a tie, not across a periodic axis, where the parts would meet at both ends.
+    const int span0 = high[0] - low[0], span1 = high[1] - low[1];
+    const bool periodic0 = m_grid.periodic(m_across[0]), periodic1 = m_grid.periodic(m_across[1]);
+    const int along = span1 > span0 || (span1 == span0 && periodic0 && !periodic1) ? 1 : 0;
     const auto cut_axis = static_cast<std::size_t>(m_across[along]);
     const auto other_axis = static_cast<std::size_t>(m_across[1 - along]);
     std::sort(begin, end, [&](std::int64_t a, std::int64_t b) {

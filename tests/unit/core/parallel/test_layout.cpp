@@ -183,5 +183,14 @@ TEST(Partition, ByLayersCutsAcrossTheLongerSideOfALayer) {
     }
 }
 
+TEST(Partition, ByLayersOnATieDoesNotCutAcrossAPeriodicAxis) {
+  Built s(box_deck(4, 4, 3, "[grid]\nperiodic = [\"x\"]\n" + by_layers));
+  if (parallel::Communicator().size() != 2) GTEST_SKIP() << "one cut: 2 ranks";
+  for (std::size_t n = 0; n < s.owner.size(); ++n)
+    if (s.flags.kind[n] == CellKind::fluid) {
+      EXPECT_EQ(s.owner[n], s.grid.index3(static_cast<std::int64_t>(n))[1] < 2 ? 0 : 1) << "cell " << n;
+    }
+}
+
 }  // namespace
 }  // namespace bagnold::tests

@@ -109,29 +109,34 @@ void LinearSystem::create_ksp() {
   // The outer iteration hands over a good guess: reduce its residual by the relative tolerance
   // (PETSc's default measures against ||b||, which stalls the outer loop near that tolerance).
   petsc_check(KSPConvergedDefaultSetUIRNorm(m_ksp.get()), "KSPConvergedDefaultSetUIRNorm");
+  // KrylovSettings::default_options go into PETSc's options database for this one
+  // KSPSetFromOptions and out again, so that they neither reach another system nor count as
+  // options the user gave.
+  const auto written = write_default_options();
   petsc_check(KSPSetFromOptions(m_ksp.get()), "KSPSetFromOptions");
-  apply_default_options(pc);
+  take_back_default_options(written);
 }
 
-void LinearSystem::apply_default_options(PC pc) {
-  if (m_settings.default_options.empty()) return;
-  // Only for the preconditioner they were chosen for: an option on the command line may have
-  // changed it.
-  PCType chosen = nullptr;
-  petsc_check(PCGetType(pc, &chosen), "PCGetType");
-  if (!chosen || m_settings.pc_type != chosen) return;
-  // Written into PETSc's options database for one more KSPSetFromOptions, then taken out again,
-  // so that they neither reach another system nor count as options the user gave.
+std::vector<std::string> LinearSystem::write_default_options() const {
   std::vector<std::string> written;
+  if (m_settings.default_options.empty()) return written;
+  // Only for the preconditioner they were chosen for: the command line may choose another.
+  char chosen[64] = "";
+  PetscBool given = PETSC_FALSE;
+  petsc_check(PetscOptionsGetString(nullptr, m_prefix.c_str(), "-pc_type", chosen, sizeof chosen, &given),
+              "PetscOptionsGetString");
+  if (given && m_settings.pc_type != chosen) return written;
   for (const auto& [name, value] : m_settings.default_options) {
-    PetscBool given = PETSC_FALSE;
     petsc_check(PetscOptionsHasName(nullptr, m_prefix.c_str(), ("-" + name).c_str(), &given),
                 "PetscOptionsHasName");
     if (given) continue;
     written.push_back("-" + m_prefix + name);
     petsc_check(PetscOptionsSetValue(nullptr, written.back().c_str(), value.c_str()), "PetscOptionsSetValue");
   }
-  petsc_check(KSPSetFromOptions(m_ksp.get()), "KSPSetFromOptions");
+  return written;
+}
+
+void LinearSystem::take_back_default_options(const std::vector<std::string>& written) const {
   for (const auto& option : written) {
     PetscBool used = PETSC_FALSE;
     // PETSc keeps the names without their dash.
@@ -139,7 +144,7 @@ void LinearSystem::apply_default_options(PC pc) {
     petsc_check(PetscOptionsClearValue(nullptr, option.c_str()), "PetscOptionsClearValue");
     if (!used)
       throw std::logic_error("LinearSystem: the default option " + option + " is not one of " +
-                             std::string(chosen) + "'s");
+                             m_settings.pc_type + "'s");
   }
 }
 

@@ -74,7 +74,10 @@ class LinearSystem {
 
  private:
   void create_ksp();  // (re)creates the KSP with the settings and the command-line options
-  void apply_default_options(PC pc);  // KrylovSettings::default_options, after KSPSetFromOptions
+  // KrylovSettings::default_options into PETSc's options database before KSPSetFromOptions
+  // (those written), and out again after it; an unused one throws.
+  std::vector<std::string> write_default_options() const;
+  void take_back_default_options(const std::vector<std::string>& written) const;
   SolveReport solve_assembled(std::vector<double>& x);  // solve() after its busy segment's mark
   // KSPSolve of matrix · solution = rhs with m_ksp; a solution with Inf or NaN recreates the KSP.
   SolveReport run_ksp(Mat matrix, Vec rhs, Vec solution);

@@ -117,6 +117,9 @@ int run_command(const DeckArguments& args) {
     // is redone (numerics.repartition_imbalance).
     const std::string weighing =
         deck.numerics.partition_weights == "cells" ? "work" : deck.numerics.partition_weights;
+    // "work" and "phases" weigh the partition by the state; "cells" and "layers" by the geometry.
+    const bool weighed_by_state =
+        deck.numerics.partition_weights == "work" || deck.numerics.partition_weights == "phases";
     parallel::PartitionWeights weights;      // of a partition by the state, else empty
     parallel::PartitionWeights repartition;  // the next segment's (numerics.repartition_imbalance)
     const auto partition_by_state = [&](parallel::PartitionWeights by) {
@@ -145,9 +148,7 @@ int run_command(const DeckArguments& args) {
             return first_segment ? bad_input : run_failed;
           }
         }
-        if (weighted || deck.numerics.partition_weights == "cells" ||
-            deck.numerics.partition_weights == "layers" || comm.size() == 1)
-          break;
+        if (weighted || !weighed_by_state || comm.size() == 1) break;
         partition_by_state(run::partition_weights(weighing, *prepared.domain, state, solver::solids_threshold));
       }
       const parallel::Domain& domain = *prepared.domain;

@@ -21,9 +21,11 @@ const Index3 face_offsets[6] = {{-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0
 
 // METIS k-way on the fluid-cell graph; returns the part of each fluid cell in natural order.
 std::vector<idx_t> metis_parts(const grid::StructuredGrid& grid, const grid::CellFlags& flags,
-                               const std::vector<std::int64_t>& fluid_cells,
-                               const std::vector<idx_t>& vertex_of, int parts,
+                               const std::vector<std::int64_t>& fluid_cells, int parts,
                                const PartitionWeights& weights) {
+  std::vector<idx_t> vertex_of(static_cast<std::size_t>(grid.extended_cell_count()), -1);
+  for (std::size_t v = 0; v < fluid_cells.size(); ++v)
+    vertex_of[static_cast<std::size_t>(fluid_cells[v])] = static_cast<idx_t>(v);
   std::vector<idx_t> xadj{0}, adjncy;
   xadj.reserve(fluid_cells.size() + 1);
   adjncy.reserve(6 * fluid_cells.size());
@@ -71,25 +73,17 @@ std::vector<idx_t> metis_parts(const grid::StructuredGrid& grid, const grid::Cel
   return part;
 }
 
-// The fluid cells in natural order, and each one's vertex number (-1 for the other cells).
-struct FluidCells {
-  std::vector<std::int64_t> cells;
-  std::vector<idx_t> vertex_of;
-};
-
-FluidCells fluid_cells_of(const grid::StructuredGrid& grid, const grid::CellFlags& flags, int parts) {
-  const auto n = static_cast<std::size_t>(grid.extended_cell_count());
-  FluidCells fluid{{}, std::vector<idx_t>(n, -1)};
-  for (std::size_t c = 0; c < n; ++c)
-    if (flags.kind[c] == CellKind::fluid) {
-      fluid.vertex_of[c] = static_cast<idx_t>(fluid.cells.size());
-      fluid.cells.push_back(static_cast<std::int64_t>(c));
-    }
-  if (fluid.cells.empty())
+// The fluid cells' natural indices, in order; throws when there are none or fewer than `parts`.
+std::vector<std::int64_t> fluid_cells_of(const grid::StructuredGrid& grid, const grid::CellFlags& flags,
+                                         int parts) {
+  std::vector<std::int64_t> fluid;
+  for (std::size_t c = 0; c < static_cast<std::size_t>(grid.extended_cell_count()); ++c)
+    if (flags.kind[c] == CellKind::fluid) fluid.push_back(static_cast<std::int64_t>(c));
+  if (fluid.empty())
     throw grid::GeometryError("the geometry blocks every cell of the domain: nothing can flow");
-  if (parts > static_cast<int>(fluid.cells.size()))
+  if (parts > static_cast<int>(fluid.size()))
     throw grid::GeometryError("more ranks (" + std::to_string(parts) + ") than fluid cells (" +
-                             std::to_string(fluid.cells.size()) + ")");
+                             std::to_string(fluid.size()) + ")");
   return fluid;
 }
 
@@ -119,9 +113,9 @@ void give_boundary_cells_owners(const grid::StructuredGrid& grid, const grid::Ce
 // Recursive coordinate bisection of one layer's fluid cells [begin, end) over the parts
 // [first, first + count): cut across the axis along which they span more cells (on a tie the
 // first of the two, unless it is periodic and the other not: across a periodic axis the parts
-// meet at both ends), the cells on each side in proportion to its parts. `carry` holds, per node of the bisection (its first part and
-// count), how far the cuts of the layers before fell short of the ideal, so that the rounding
-// of many small layers does not add up on one side.
+// meet at both ends), the cells on each side in proportion to its parts. m_carry holds, per node
+// of the bisection (its first part and count), how far the cuts of the layers before fell short
+// of the ideal, so that the rounding of many small layers does not add up on one side.
 class LayerBisection {
  public:
   LayerBisection(const grid::StructuredGrid& grid, int axis, std::vector<int>& owner)
@@ -173,14 +167,14 @@ class LayerBisection {
 
 std::vector<int> partition_cells(const grid::StructuredGrid& grid, const grid::CellFlags& flags,
                                  int parts, const PartitionWeights& weights) {
-  const FluidCells fluid = fluid_cells_of(grid, flags, parts);
+  const auto fluid = fluid_cells_of(grid, flags, parts);
   std::vector<int> owner(static_cast<std::size_t>(grid.extended_cell_count()), -1);
   if (parts > 1) {
-    const auto part = metis_parts(grid, flags, fluid.cells, fluid.vertex_of, parts, weights);
-    for (std::size_t v = 0; v < fluid.cells.size(); ++v)
-      owner[static_cast<std::size_t>(fluid.cells[v])] = static_cast<int>(part[v]);
+    const auto part = metis_parts(grid, flags, fluid, parts, weights);
+    for (std::size_t v = 0; v < fluid.size(); ++v)
+      owner[static_cast<std::size_t>(fluid[v])] = static_cast<int>(part[v]);
   } else {
-    for (const auto c : fluid.cells) owner[static_cast<std::size_t>(c)] = 0;
+    for (const auto c : fluid) owner[static_cast<std::size_t>(c)] = 0;
   }
   give_boundary_cells_owners(grid, flags, owner);
   return owner;
@@ -188,14 +182,14 @@ std::vector<int> partition_cells(const grid::StructuredGrid& grid, const grid::C
 
 std::vector<int> partition_cells_by_layers(const grid::StructuredGrid& grid,
                                            const grid::CellFlags& flags, int parts, int axis) {
-  const FluidCells fluid = fluid_cells_of(grid, flags, parts);
+  const auto fluid = fluid_cells_of(grid, flags, parts);
   std::vector<int> owner(static_cast<std::size_t>(grid.extended_cell_count()), -1);
   std::map<int, std::vector<std::int64_t>> layers;  // by index along the axis
-  for (const auto c : fluid.cells) layers[grid.index3(c)[static_cast<std::size_t>(axis)]].push_back(c);
+  for (const auto c : fluid) layers[grid.index3(c)[static_cast<std::size_t>(axis)]].push_back(c);
   LayerBisection bisection(grid, axis, owner);
   for (auto& [index, cells] : layers) bisection.split(cells.begin(), cells.end(), 0, parts);
   std::vector<std::int64_t> owned(static_cast<std::size_t>(parts), 0);
-  for (const auto c : fluid.cells) ++owned[static_cast<std::size_t>(owner[static_cast<std::size_t>(c)])];
+  for (const auto c : fluid) ++owned[static_cast<std::size_t>(owner[static_cast<std::size_t>(c)])];
   for (int r = 0; r < parts; ++r)
     if (owned[static_cast<std::size_t>(r)] == 0)
       throw grid::GeometryError("numerics.partition_weights = \"layers\" leaves rank " + std::to_string(r) +

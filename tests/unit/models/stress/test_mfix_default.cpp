@@ -100,7 +100,7 @@ TEST(MfixDefault, PlasticRegimeHasPlasticPressureAndSchaefferViscosity) {
   const double plastic = 1e24 * std::pow(0.02, 10);
   EXPECT_NEAR(s.pressure, plastic, 1e-12 * plastic);
   EXPECT_NEAR(s.pressure_derivative, 10 * 1e24 * std::pow(0.02, 9), 1e-12 * s.pressure_derivative);
-  // γ̇_min = 1e-3 changes τ by (γ̇_min/γ̇)²/2 = 5e-15.
+  // γ̇_min is 0 by default: τ = μ γ̇ exactly.
   EXPECT_NEAR(s.shear_viscosity * rate, 0.5 * plastic, 1e-12 * plastic);
   EXPECT_EQ(s.granular_temperature, 0.0);
   // MFIX's Schaeffer stress is 2 μ D (LAMBDA_s_p = 0): a bulk viscosity of ⅔ μ.

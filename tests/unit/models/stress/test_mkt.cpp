@@ -160,8 +160,8 @@ TEST(Mkt, PressureStaysStiffAndFiniteAtAndAboveCriticalFraction) {
   const double far = probe(*model, m, onset + 0.1, 0.0).pressure;
   EXPECT_NEAR(far, 0.14 * 1e8 * std::pow(0.1, 2.0 / 3.0), 1e-5 * far);
   EXPECT_LT(far, 0.14 * 1e8 * std::pow(0.1, 2.0 / 3.0));
-  // At rest the shear viscosity is the regularized yield stress η_s P/γ̇_min, capped.
-  EXPECT_DOUBLE_EQ(at_rest.shear_viscosity, 1e7);
+  // At rest the shear viscosity of the yield stress η_s P/γ̇ is the cap (γ̇_min is 0 by default).
+  EXPECT_DOUBLE_EQ(at_rest.shear_viscosity, 1e9);
 }
 
 TEST(Mkt, PressureDerivativeMatchesFiniteDifferences) {

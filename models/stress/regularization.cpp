@@ -12,9 +12,14 @@ std::vector<CoefficientSpec> ViscosityLimits::specs(double default_max_viscosity
   return {
       real_spec("min_strain_rate", "1/s", ViscosityLimits{}.min_strain_rate, 0.0, 1e3,
                 "γ̇_min [1/s]: rate-independent stresses get the viscosity τ/sqrt(γ̇² + γ̇_min²), "
-                "finite as γ̇ → 0 and exact for γ̇ ≫ γ̇_min."),
+                "exact for γ̇ ≫ γ̇_min. Physically: below γ̇ ≈ γ̇_min the yield stress is not "
+                "reached and a zone creeps where it would stand, as under a viscosity cap of "
+                "τ/γ̇_min, which depends on the load. 0 (the default): off, max_viscosity alone "
+                "bounds μ_s."),
       real_spec("max_viscosity", "Pa s", default_max_viscosity, 1e-6, 1e12,
-                "μ_max [Pa s]: cap on the solids shear viscosity (stagnant, packed regions)."),
+                "μ_max [Pa s]: cap on the solids shear viscosity. Physically: where τ/γ̇ would "
+                "exceed it (stagnant, packed regions) the yield stress is not reached and the zone "
+                "creeps at γ̇ ≈ τ/μ_max (about 10⁻⁷ 1/s at a bin's loads at 10⁹ Pa s)."),
   };
 }
 

@@ -19,7 +19,7 @@ std::vector<CoefficientSpec> ViscosityLimits::specs(double default_max_viscosity
       real_spec("max_viscosity", "Pa s", default_max_viscosity, 1e-6, 1e12,
                 "μ_max [Pa s]: cap on the solids shear viscosity. Physically: where τ/γ̇ would "
                 "exceed it (stagnant, packed regions) the yield stress is not reached and the zone "
-                "creeps at γ̇ ≈ τ/μ_max (about 10⁻⁷ 1/s at a bin's loads at 10⁹ Pa s)."),
+                "creeps at γ̇ ≈ τ/μ_max (10⁻⁸–10⁻⁶ 1/s at a bin's loads at 10⁹ Pa s)."),
   };
 }
 

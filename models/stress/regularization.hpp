@@ -13,14 +13,14 @@ namespace bagnold::models {
 
 struct ViscosityLimits {
   // γ̇_min [1/s]: off by default, so that μ_max alone bounds the viscosity of a packed zone. A
-  // positive γ̇_min caps μ_s at η p/γ̇_min, which depends on the load: 10⁻³ 1/s capped the
-  // chute's jammed base near 10⁵ Pa s and moved its flow by 16 % (docs/models.md, "Viscosity
+  // positive γ̇_min caps μ_s at η p/γ̇_min, which depends on the load: 10⁻³ 1/s caps the chute's
+  // jammed base near 10⁵ Pa s and makes its surface flow 28 % fast (docs/models.md, "Viscosity
   // regularization").
   double min_strain_rate = 0.0;
-  // μ_max [Pa s]: high enough that the creep it allows no longer moves any shipped case: the
-  // no-slip chute with sidewalls, whose arrested base and walls set its flow, moves by 0.01 %
-  // from 10⁹ to 10¹⁰ (2.4 % from 10⁷ to 10⁸); the bins and the hourglass by less than 0.1 %
-  // from 10⁷ on (docs/models.md, docs/benchmarks.md). mfix-default has MFIX's own cap instead.
+  // μ_max [Pa s]: high enough that the creep it allows moves no shipped case: the no-slip chute
+  // with sidewalls, whose arrested base and walls set its flow, moves by 0.03 % from 10⁹ to 10¹⁰
+  // (2.8 % from 10⁷ to 10⁸); the bins and the hourglass by less than 0.1 % from 10⁷ on
+  // (docs/models.md, docs/benchmarks.md). mfix-default has MFIX's own cap instead.
   double max_viscosity = 1e9;
 
   // The two keys with the defaults above, or with another μ_max (mfix-default: MFIX's cap).

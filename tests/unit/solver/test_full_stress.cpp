@@ -166,7 +166,7 @@ TEST(FullStress, SteadyShearNormalStressesAreAppendixAEquation15UnderADilatantGr
       if (std::abs(x[0] - 0.045) > 1e-9 || std::abs(x[1] - 0.045) > 1e-9 || std::abs(x[2] - 0.045) > 1e-9) continue;
       const auto i = static_cast<std::size_t>(l);
       EXPECT_NEAR(s.c.state.solids_pressure[i], p, 1e-12 * p);
-      // μ_s = η p/sqrt(γ̇² + γ̇_min²) (regularization.hpp): 1e-9 from η p/γ̇ at this rate.
+      // μ_s = η p/sqrt(γ̇² + γ̇_min²) (regularization.hpp), η p/γ̇ with the default γ̇_min = 0.
       EXPECT_NEAR(s.fields.viscosity[solids][i], eta * p / rate, 1e-8 * eta * p / rate);
       EXPECT_EQ(s.fields.bulk_viscosity[i], 0.0);
     }

@@ -28,6 +28,7 @@ Closures::Closures(const deck::Deck& deck, const Discretization& discretization)
       m_gas_viscosity(deck.gas.viscosity),
       m_relaxation_time(deck.numerics.pressure_shear_rate_relaxation_time),
       m_bulk_viscosity_ratio(deck.numerics.solids_bulk_viscosity_ratio),
+      m_bulk_viscosity_until(deck.numerics.solids_bulk_viscosity_until),
       m_gas_moves(deck.gas.enabled),
       m_newton(deck::choice_value(deck::viscosity_linearization_choices,
                                   deck.numerics.viscosity_linearization, "viscosity linearization") ==
@@ -146,6 +147,7 @@ void Closures::evaluate_solids_stress(const Discretization& discretization, run:
     relaxed.strain_rate = input(m_pressure_rate);
     m_stress->evaluate(m_material, relaxed, at_relaxed_rate);
   }
+  const double ratio = m_step_start < m_bulk_viscosity_until ? m_bulk_viscosity_ratio : 0.0;
   for (std::size_t k = 0; k < n; ++k) {
     const auto i = static_cast<std::size_t>(m_cells[k]);
     state.solids_pressure[i] = m_pressure[k];
@@ -153,7 +155,7 @@ void Closures::evaluate_solids_stress(const Discretization& discretization, run:
     state.granular_temperature[i] = m_temperature[k];
     fields.pressure_derivative[i] = m_derivative[k];
     fields.viscosity[solids][i] = m_shear[k];
-    fields.bulk_viscosity[i] = m_bulk[k] + m_bulk_viscosity_ratio * m_shear[k];
+    fields.bulk_viscosity[i] = m_bulk[k] + ratio * m_shear[k];
   }
   for (const auto& [outflow, fluid] : m_outflow_copies)
     state.solids_pressure[static_cast<std::size_t>(outflow)] = state.solids_pressure[static_cast<std::size_t>(fluid)];

@@ -5,7 +5,8 @@
 //   ε_g μ_g  the gas's effective viscosity, and ∇·u_g (velocity_divergence);
 //   P_s, dP_s/dε_s, μ_s, λ_s, Θ   the solids-stress model (models/stress/) at ε_s and the
 //            strain-rate invariants of the solids velocity (solver/strain_rate.hpp); λ_s gains
-//            r μ_s with numerics.solids_bulk_viscosity_ratio r > 0.
+//            r μ_s with numerics.solids_bulk_viscosity_ratio r > 0, in the steps that start
+//            before numerics.solids_bulk_viscosity_until (set_step_start).
 // Evaluated over every local fluid cell (the halo included, since the strain rate is
 // exchanged), so the momentum stencils need no further exchange.
 // With numerics.pressure_shear_rate_relaxation_time τ_P > 0, P_s and dP_s/dε_s come from a second
@@ -51,6 +52,9 @@ class Closures {
   void evaluate(const Discretization& discretization, run::FlowState& state,
                 const run::FlowState& old, double dt, ClosureFields& fields);
 
+  // The time at which the step being solved starts [s] (where the bulk viscosity ends).
+  void set_step_start(double time) { m_step_start = time; }
+
   // The solids-stress model, null unless the solids move.
   const models::SolidsStressModel* stress() const { return m_stress.get(); }
   const models::Material& material() const { return m_material; }
@@ -67,6 +71,8 @@ class Closures {
   double m_gas_viscosity;
   double m_relaxation_time;  // τ_P [s], 0: off
   double m_bulk_viscosity_ratio;  // r of numerics.solids_bulk_viscosity_ratio: λ_s += r μ_s
+  double m_bulk_viscosity_until;  // numerics.solids_bulk_viscosity_until [s]
+  double m_step_start = 0.0;      // [s]
   bool m_gas_moves;
   // (outflow cell, its fluid neighbour): P_s copied across a zero-gradient solids outlet.
   std::vector<std::pair<int, int>> m_outflow_copies;

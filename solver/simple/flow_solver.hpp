@@ -60,6 +60,9 @@ class FlowSolver {
   // together (StepResult::abandoned; `state` is then not a solution).
   StepResult advance(run::FlowState& state, const run::FlowState& old, double dt,
                      bool (*stop_probe)() = nullptr);
+  // The time at which the next steps start [s], for what acts only over part of a run
+  // (numerics.solids_bulk_viscosity_until). 0 until set.
+  void set_step_start(double time) { m_closures.set_step_start(time); }
 
   // An extra gas momentum source [N/m³] at each face velocity of direction d (local_count()
   // entries, indexed by the owning cell), e.g. a manufactured solution's forcing. Empty: none.

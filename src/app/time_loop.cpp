@@ -77,6 +77,7 @@ RunSummary run_time_loop(const TimeLoopContext& context, FlowSolver& flow, run::
     // answer (beyond the outer tolerance when numerics.pressure_preconditioner_steps > 1).
     const double dt_try = std::min(controller.dt(), end - time);
     old = state;
+    flow.set_step_start(time);
     const StepResult result = flow.advance(state, old, dt_try, run::signal_received);
     summary.outer_iterations += result.iterations;
     if (result.abandoned) {

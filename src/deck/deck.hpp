@@ -6,6 +6,7 @@
 // both by `bagnold keys`.
 
 #include <array>
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
@@ -156,6 +157,7 @@ struct Numerics {
   std::string viscosity_linearization = "picard";  // picard | newton
   std::string solids_momentum = "segregated";  // segregated | coupled
   double solids_bulk_viscosity_ratio = 0.0;  // r μ_s added to the closure's λ_s
+  double solids_bulk_viscosity_until = std::numeric_limits<double>::infinity();  // [s]: in steps starting before
   double pressure_shear_rate_relaxation_time = 0.0;  // τ_P [s]: P_s at γ̇ relaxed over τ_P
   double relax_pressure = 1.0;           // α_p (SIMPLE needs about 0.3)
   std::string pressure_preconditioner = "hypre";  // hypre | gamg

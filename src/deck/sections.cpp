@@ -427,6 +427,13 @@ const Section<Numerics>& numerics_section() {
           .doc("r: a bulk viscosity r μ_s added to the closure's own λ_s (σ = −P_s I + 2 μ_s D + "
                "(λ_s − ⅔ μ_s) ∇·u I), which dissipates the work a rate-dependent P_s does on "
                "expansion. 0: the closure's λ_s alone."),
+      key(&Numerics::solids_bulk_viscosity_until, "solids_bulk_viscosity_until").unit("s").init()
+          .at_least(0.0)
+          .doc("The bulk viscosity r μ_s acts in the steps that start before this time and not "
+               "after it, so that a run can use it to get through a start-up and then run the "
+               "closure's own equations. inf: the whole run. Where it ends, the run carries on "
+               "from the state it reached; whether that state is one the closure alone holds is "
+               "shown by running on (cases/chute/README.md, \"The stabilizer\")."),
       key(&Numerics::pressure_shear_rate_relaxation_time, "pressure_shear_rate_relaxation_time")
           .unit("s").init().within(0.0, 1e3)
           .doc("τ_P: the closure's P_s and dP_s/dε_s are evaluated at a shear rate γ̇_P that "

@@ -1,6 +1,6 @@
 #!/bin/sh
 # A restart from snapshots written before the field pressure_shear_rate existed: the chute
-# (sidewalls.toml, which lags P_s's shear rate) runs to 0.02 s with snapshots every 0.01 s (each at
+# (sidewalls.toml with P_s's shear rate lagged over 0.5 ms) runs to 0.02 s with snapshots every 0.01 s (each at
 # the first step past its time); the field is then deleted from every snapshot (as an older
 # Bagnold wrote them) and the run restarts from the one near 0.01 s to 0.03 s. The restart must run, the new snapshots must have the field, and run.xmf
 # must name only datasets that exist (the older snapshots' entries without the field).
@@ -8,7 +8,7 @@
 set -eu
 bagnold=$1; work=$2
 deck=cases/chute/sidewalls.toml
-common="--set output.progress=never --set output.snapshot_interval=0.01 --set output.directory=$work"
+common="--set numerics.pressure_shear_rate_relaxation_time=0.0005 --set output.progress=never --set output.snapshot_interval=0.01 --set output.directory=$work"
 rm -rf "$work"
 $bagnold run $deck $common --set run.end_time=0.02 > /dev/null
 /usr/bin/python3 - "$work" <<'PY'

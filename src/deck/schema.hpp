@@ -155,7 +155,10 @@ class Key {
   }
   static bool in_one(double x, const std::optional<double>& lo, const std::optional<double>& hi,
                      bool lo_open, bool hi_open) {
-    if (!std::isfinite(x)) return false;
+    // ±inf only where the range closes on it (within(0, inf): "for ever").
+    const bool infinite_bound = std::isinf(x) && ((x > 0 && hi && *hi == x && !hi_open) ||
+                                                  (x < 0 && lo && *lo == x && !lo_open));
+    if (!std::isfinite(x) && !infinite_bound) return false;
     if (lo && (lo_open ? !(x > *lo) : !(x >= *lo))) return false;
     if (hi && (hi_open ? !(x < *hi) : !(x <= *hi))) return false;
     return true;

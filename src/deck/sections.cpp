@@ -428,7 +428,7 @@ const Section<Numerics>& numerics_section() {
                "(λ_s − ⅔ μ_s) ∇·u I), which dissipates the work a rate-dependent P_s does on "
                "expansion. 0: the closure's λ_s alone."),
       key(&Numerics::solids_bulk_viscosity_until, "solids_bulk_viscosity_until").unit("s").init()
-          .at_least(0.0)
+          .within(0.0, std::numeric_limits<double>::infinity())
           .doc("The bulk viscosity r μ_s acts in the steps that start before this time and not "
                "after it, so that a run can use it to get through a start-up and then run the "
                "closure's own equations. inf: the whole run. Where it ends, the run carries on "

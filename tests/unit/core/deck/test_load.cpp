@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "models/stress/solids_stress.hpp"
 #include "models/wall/wall_law.hpp"
@@ -464,6 +465,16 @@ TEST(DeckErrors, OutOfRangeAtLeast) {
   EXPECT_EQ(e.line, 2);
   EXPECT_TRUE(contains(e.message, "out of range")) << e.message;
   EXPECT_TRUE(contains(e.message, ">= 0.0")) << e.message;
+}
+
+// inf is a value only where the range closes on it ("for ever"): nowhere else, and nan never.
+TEST(DeckLoad, InfinityOnlyWhereTheRangeClosesOnIt) {
+  const auto d = deck::load_deck_text(deck_text("[numerics]\nsolids_bulk_viscosity_until = inf\n"), "deck.toml");
+  EXPECT_TRUE(std::isinf(d.numerics.solids_bulk_viscosity_until));
+  const std::string text = deck_text("[gas]\ndensity = inf\n[numerics]\nsolids_bulk_viscosity_until = nan\n");
+  const auto errors = errors_of(text);
+  EXPECT_TRUE(contains(error_on(errors, "gas.density").message, "value inf is out of range"));
+  EXPECT_TRUE(contains(error_on(errors, "numerics.solids_bulk_viscosity_until").message, "out of range"));
 }
 
 TEST(DeckErrors, OutOfRangeWithin) {

@@ -77,6 +77,7 @@ void expect_same(const deck::Deck& a, const deck::Deck& b) {
     EXPECT_EQ(a.initial[i].gas_velocity, b.initial[i].gas_velocity);
     EXPECT_EQ(a.initial[i].solids_velocity, b.initial[i].solids_velocity);
   }
+  EXPECT_EQ(a.numerics.solids_bulk_viscosity_until, b.numerics.solids_bulk_viscosity_until);
   EXPECT_EQ(a.output.directory, b.output.directory);
   EXPECT_EQ(a.output.snapshot_interval, b.output.snapshot_interval);
   EXPECT_EQ(a.output.progress, b.output.progress);

@@ -22,7 +22,6 @@ SolverSettings::SolverSettings(const deck::Deck& deck, const parallel::Domain& d
       limiter(limiter_from_name(deck.numerics.convection)),
       residual_normalization(residual_normalization_from_name(deck.numerics.residual_normalization)),
       net_force_residual(deck.numerics.net_force_residual),
-      bulk_viscosity_ratio(deck.numerics.solids_bulk_viscosity_ratio),
       viscosity_average(deck::choice_value(deck::viscosity_average_choices,
                                            deck.numerics.viscosity_average, "viscosity average")),
       shear_on_opening_faces(deck.numerics.shear_on_opening_faces),

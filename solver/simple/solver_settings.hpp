@@ -40,7 +40,6 @@ struct SolverSettings {
   Limiter limiter = Limiter::superbee;
   ResidualNormalization residual_normalization = ResidualNormalization::velocity_scale;
   bool net_force_residual = false;
-  double bulk_viscosity_ratio = 0.0;  // numerics.solids_bulk_viscosity_ratio: λ_s += r μ_s
   deck::ViscosityAverage viscosity_average = deck::ViscosityAverage::arithmetic;
   bool shear_on_opening_faces = true;  // numerics.shear_on_opening_faces
   bool copy_fluxes_into_openings = false;  // numerics.copy_fluxes_into_openings

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
 
 #include "models/drag/drag_law.hpp"
 #include "models/stress/solids_stress.hpp"
@@ -195,6 +196,31 @@ TEST(Closures, RelaxedPressureShearRateIsImplicitEuler) {
     }
   }
   EXPECT_GT(checked, 0);
+}
+
+// numerics.solids_bulk_viscosity_ratio r adds r μ_s to λ_s in the steps that start before
+// numerics.solids_bulk_viscosity_until, and nothing from that time on.
+TEST(Closures, BulkViscosityActsInStepsStartingBeforeItsEnd) {
+  Case c(column("steady-shear", "solids_bulk_viscosity_ratio = 2.0\nsolids_bulk_viscosity_until = 0.5\n"),
+         {"grid.z.ratio=2.0"});
+  fill(c);
+  solver::Closures closures(c.deck, c.disc);
+  const Reference reference(c.deck);
+  for (const auto& [start, ratio] : {std::pair{0.0, 2.0}, std::pair{0.4999, 2.0}, std::pair{0.5, 0.0},
+                                     std::pair{3.0, 0.0}}) {
+    closures.set_step_start(start);
+    solver::ClosureFields fields(static_cast<std::size_t>(c.local_count()));
+    closures.evaluate(c.disc, c.state, c.old, 1e-3, fields);
+    int dense = 0;
+    for (int l = 0; l < c.local_count(); ++l) {
+      if (!c.fluid(l)) continue;
+      const auto i = static_cast<std::size_t>(l);
+      const auto expected = reference.at(c.state.solids_fraction[i], expected_rate(), compression);
+      expect_close(fields.bulk_viscosity[i], expected[3] + ratio * expected[2], "lambda_s", l);
+      if (expected[2] > 0.0) ++dense;
+    }
+    EXPECT_GT(dense, 0) << "step start " << start;
+  }
 }
 
 // The column's top as a pressure outflow (a [[boundary]] table to append).

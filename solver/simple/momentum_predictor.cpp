@@ -23,6 +23,7 @@
 #include <cmath>
 
 #include "solver/simple/momentum_predictor.hpp"
+#include "solver/simple/row_trace.hpp"
 
 namespace bagnold::solver {
 
@@ -181,6 +182,14 @@ bool MomentumPredictor::predict(int d, const Inputs& in, run::FlowState& state,
            .force = row.force + std::abs(beta_v * (u_other - u)),
            .mfix_scale = mfix_scale, .mfix_counted = mfix_counted});
       worst.record((phase == gas ? gas_momentum_x : solids_momentum_x) + d, row_residual, l);
+      if (m_row_trace.on())
+        m_row_trace.report(disc.domain(), layout.comm().rank(), layout.comm().size(),
+                           {.phase = phase, .component = d, .owner = layout.natural(l),
+                            .plus = n >= 0 ? layout.natural(n) : -1,
+                            .residual = row.b + beta_v * u_other + eliminated_part - (A * u - row.neighbours_u),
+                            .weight = row.weight, .force = row.force + std::abs(beta_v * (u_other - u)),
+                            .diagonal = A, .velocity = u, .sources = row.b + beta_v * u_other,
+                            .neighbours = row.neighbours_u, .viscous = row.viscous});
     };
 
     if (g) {

@@ -9,6 +9,7 @@
 #include "solver/petsc/linear_system.hpp"
 #include "solver/simple/coupled_solids_momentum.hpp"
 #include "solver/simple/momentum_rows.hpp"
+#include "solver/simple/row_trace.hpp"
 #include "solver/simple/step_record.hpp"
 
 namespace bagnold::solver {
@@ -56,6 +57,7 @@ class MomentumPredictor {
   std::array<std::vector<MomentumRow>, 2> m_rows;  // scratch, per phase
   std::array<std::vector<double>, 2> m_x;          // scratch, per phase
   MomentumAssemblyScratch m_assembly_scratch;      // scratch of the assembly
+  RowTrace m_row_trace;                            // BAGNOLD_TRACE_ROWS (row_trace.hpp)
 };
 
 }  // namespace bagnold::solver

@@ -4,9 +4,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <string>
 
 #include "solver/simple/flow_solver.hpp"
 #include "solver/simple/row_location.hpp"
+#include "solver/simple/row_trace.hpp"
 #include "src/run/initial_state.hpp"
 #include "tests/support/petsc_environment.hpp"
 #include "tests/unit/solver/solver_case.hpp"
@@ -209,6 +212,41 @@ TEST(FlowSolver, AFailedRowIsLocatedInAFluidCellAndItsOpeningByName) {
   EXPECT_EQ(where.cell, (grid::Index3{1, 1, 1}));
   EXPECT_EQ(where.face, "");
   EXPECT_EQ(where.text(), "cell (1, 1, 1) at (0.015, 0.015, 0.015) m");
+}
+
+TEST(FlowSolver, RowTraceSelectsRowsAgainstTheirWeightAndNamesTheirCell) {
+  const Case c(unit_deck(2, 2, 3, "", 0.0, gas_only()));
+  const auto& grid = c.domain.grid;
+  auto natural = [&](int i, int j, int k) { return grid.natural(grid::Index3{i, j, k}); };
+  const solver::RowTrace trace(0.5);
+  ASSERT_TRUE(trace.on());
+  solver::RowTrace::Row row{.phase = 1, .component = 0, .owner = natural(0, 1, 2), .plus = natural(1, 1, 2),
+                            .residual = -0.6, .weight = 1.0, .force = 3.0, .diagonal = 2e5,
+                            .velocity = -1e-7, .sources = 80.0, .neighbours = -80.0, .viscous = 0.05};
+  EXPECT_TRUE(trace.selects(row));  // |r| = 0.6 of its weight
+  row.residual = 0.4;
+  EXPECT_FALSE(trace.selects(row));
+  row.weight = 0.0;  // no weight (no gravity): judged against its force F = 3
+  row.residual = 1.6;
+  EXPECT_TRUE(trace.selects(row));
+  row.residual = 1.4;
+  EXPECT_FALSE(trace.selects(row));
+  row.weight = 1.0;
+  row.residual = -0.6;
+  const std::string text = trace.line(c.domain, row);
+  EXPECT_EQ(text.rfind("row solids x (0, 1, 2) +x: r/w = -0.6, r = -0.6 N", 0), 0u) << text;
+  EXPECT_NE(text.find("b = 80 N, sum a_nb u_nb = -80 N"), std::string::npos) << text;
+  EXPECT_FALSE(solver::RowTrace(0.0).on());
+  EXPECT_FALSE(solver::RowTrace(-1.0).on());
+  // From the environment: a positive number, anything else off.
+  ::setenv("BAGNOLD_TRACE_ROWS", "0.25", 1);
+  EXPECT_TRUE(solver::RowTrace().on());
+  for (const char* bad : {"", "abc", "0", "-1", "1x"}) {
+    ::setenv("BAGNOLD_TRACE_ROWS", bad, 1);
+    EXPECT_FALSE(solver::RowTrace().on()) << bad;
+  }
+  ::unsetenv("BAGNOLD_TRACE_ROWS");
+  EXPECT_FALSE(solver::RowTrace().on());
 }
 
 }  // namespace

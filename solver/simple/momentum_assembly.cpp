@@ -14,8 +14,9 @@
 //                    records its terms c u_e, which numerics.solids_momentum = "coupled" moves
 //                    into the matrix (coupled_solids_momentum.hpp);
 //   ∂_d((λ − ⅔ μ) ∇·u)  explicit from the cell centres' ∇·u (closures.hpp).
-// Face and edge viscosities are the harmonic means of the cells around them (MFIX's AVG_H,
-// nested over an edge's four cells), or arithmetic (numerics.viscosity_average).
+// Edge viscosities are the arithmetic means of the cells around them, their harmonic means
+// (MFIX's AVG_H, nested over an edge's four cells), or for the solids yield-bounded means
+// (numerics.viscosity_average; yield_bounded_mean below); a face normal to d takes its cell's.
 //
 // For each unknown face velocity u_P (control volume between the centres of its owning cell c
 // and c's + neighbour n), and each of its six faces:
@@ -50,6 +51,7 @@
 // tangential force on it, D (u_wall − u_P) summed over its faces along a wall (no slip, or a
 // partial-slip law's c_w A), which the monitor sums (wall_shear_* columns).
 #include <algorithm>
+#include <initializer_list>
 #include <cmath>
 #include <utility>
 
@@ -61,10 +63,41 @@ namespace bagnold::solver {
 
 namespace {
 // The mean viscosity of two cells (MFIX's AVG_H when harmonic: 0 if both are 0).
+// (The yield-bounded mean's pairs, which the Newton tangent takes, are arithmetic.)
 double mean_viscosity(deck::ViscosityAverage average, double a, double b) {
-  if (average == deck::ViscosityAverage::arithmetic) return 0.5 * (a + b);
+  if (average != deck::ViscosityAverage::harmonic) return 0.5 * (a + b);
   const double sum = a + b;
   return sum > 0.0 ? 2.0 * a * b / sum : 0.0;
+}
+
+// numerics.viscosity_average = "yield-bounded": the mean of the viscosities μ_c of the cells
+// around an edge (or along a wall edge), each taken at the edge's strain rate γ̇_e, the mean of
+// the fluid cells' γ̇_c among them, as a plastic stress is (τ independent of the rate): a cell
+// that shears slower than the edge gives μ_c γ̇_c/γ̇_e, its stress over the edge's rate, one
+// that shears faster its own μ_c. Where the rates are smooth, γ̇_c/γ̇_e → 1 and this is the
+// arithmetic mean. Where a rigid cell (μ_c = τ_y/γ̇_c, unbounded as γ̇_c → 0, up to the closure's
+// cap) meets flowing ones, the arithmetic mean gives the edge a quarter of the rigid cell's
+// viscosity and the flowing cells' shear across it a stress far above any of the cells' yield
+// stresses; an edge turning in rigid rotation beside a stagnant corner then becomes a stiff
+// constraint that the segregated outer iteration does not converge (docs/solver.md, "What holds
+// the bin back under a force test"). The bound keeps the edge's stress within its cells'.
+template <class Viscosity, class Rate, class Fluid>
+double yield_bounded_mean(std::initializer_list<int> cells, Viscosity viscosity, Rate rate, Fluid fluid) {
+  double rate_sum = 0.0, fluid_cells = 0.0, count = 0.0;
+  for (const int c : cells) {
+    if (c < 0) continue;
+    count += 1.0;
+    if (fluid(c)) rate_sum += rate(c), fluid_cells += 1.0;
+  }
+  if (count == 0.0) return 0.0;
+  const double edge_rate = fluid_cells > 0.0 ? rate_sum / fluid_cells : 0.0;
+  double sum = 0.0;
+  for (const int c : cells) {
+    if (c < 0) continue;
+    const double own = rate(c);
+    sum += viscosity(c) * (fluid(c) && own < edge_rate ? own / edge_rate : 1.0);
+  }
+  return sum / count;
 }
 }  // namespace
 
@@ -108,6 +141,13 @@ void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d
   auto viscosity = [&](int local) { return local >= 0 ? mu[static_cast<std::size_t>(local)] : 0.0; };
   const deck::ViscosityAverage average = in.settings.viscosity_average;
   auto mean = [average](double a, double b) { return mean_viscosity(average, a, b); };
+  const bool yield_bounded = phase == solids && average == deck::ViscosityAverage::yield_bounded;
+  const auto& rate = in.closures.strain_rate;
+  auto rate_of = [&](int local) { return rate[static_cast<std::size_t>(local)]; };
+  auto fluid = [&](int local) { return layout.kind(local) == grid::CellKind::fluid; };
+  auto bounded = [&](std::initializer_list<int> cells) {
+    return yield_bounded_mean(cells, viscosity, rate_of, fluid);
+  };
   // The mean viscosity of each local cell and its + neighbour along d (the cell's own without
   // one), once per cell: a wall face takes its row's, an edge the mean of two rows' (each row
   // shares its cells' pair with the rows beside it).
@@ -207,13 +247,16 @@ void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d
             tangent = diffusion;
           } else {
             const double wall_distance = 0.5 * disc.width(l, e);
-            diffusion = pair_viscosity[static_cast<std::size_t>(l)] * area / wall_distance;
+            diffusion = (yield_bounded ? bounded({l, n}) : pair_viscosity[static_cast<std::size_t>(l)]) * area /
+                        wall_distance;
             if (newton) tangent = scratch.tangent[static_cast<std::size_t>(e)][static_cast<std::size_t>(l)] * area / wall_distance;
           }
         } else if (link.kind != LinkKind::zero_gradient) {
           // The edge between c, n and their neighbours m, m' across the face.
           const int m = link.local;
-          const double edge_mu = mean(pair_viscosity[static_cast<std::size_t>(l)], pair_viscosity[static_cast<std::size_t>(m)]);
+          const double edge_mu =
+              yield_bounded ? bounded({l, n, m, m >= 0 ? layout.neighbour(m, 2 * d + 1) : -1})
+                            : mean(pair_viscosity[static_cast<std::size_t>(l)], pair_viscosity[static_cast<std::size_t>(m)]);
           diffusion = edge_mu * area / (0.5 * (disc.width(l, e) + disc.width(m, e)));
           if (newton) {
             const auto& pair = scratch.tangent[static_cast<std::size_t>(e)];

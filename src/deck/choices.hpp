@@ -55,9 +55,11 @@ inline constexpr std::array<Choice<ResidualNormalization>, 4> residual_normaliza
 
 // numerics.viscosity_average: how a face or edge viscosity is made from the cells around it
 // (solver/simple/momentum_assembly.cpp).
-enum class ViscosityAverage { arithmetic, harmonic };
-inline constexpr std::array<Choice<ViscosityAverage>, 2> viscosity_average_choices{
-    {{"arithmetic", ViscosityAverage::arithmetic}, {"harmonic", ViscosityAverage::harmonic}}};
+enum class ViscosityAverage { arithmetic, harmonic, yield_bounded };
+inline constexpr std::array<Choice<ViscosityAverage>, 3> viscosity_average_choices{
+    {{"arithmetic", ViscosityAverage::arithmetic},
+     {"harmonic", ViscosityAverage::harmonic},
+     {"yield-bounded", ViscosityAverage::yield_bounded}}};
 
 // numerics.viscosity_linearization: how the solids momentum rows take μ_s(γ̇)
 // (solver/simple/momentum_assembly.cpp).

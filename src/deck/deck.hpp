@@ -151,7 +151,7 @@ struct Numerics {
   bool wall_shear_in_strain_rate = true;  // no-slip walls' shear in the wall cells' γ̇
   bool wall_shear_beside_openings = true;  // false: wall cells beside an opening free-slip in γ̇ (MFIX)
   bool copy_velocity_into_openings = false;  // true: openings hold the fluid's velocity in γ̇ (MFIX)
-  std::string viscosity_average = "arithmetic";  // arithmetic | harmonic
+  std::string viscosity_average = "arithmetic";  // arithmetic | harmonic | yield-bounded
   bool copy_fluxes_into_openings = false;  // true: openings carry the fluid's mass fluxes in convection (MFIX)
   bool shear_on_opening_faces = true;  // false: an opening's velocity faces feel no wall or edge shear (MFIX)
   std::string viscosity_linearization = "picard";  // picard | newton

@@ -399,9 +399,13 @@ const Section<Numerics>& numerics_section() {
           .one_of(choice_names(viscosity_average_choices))
           .doc("How the viscosity on a control-volume edge is made from the four cells around it: "
                "arithmetic (their mean; exact where μ varies linearly, as it falls to zero at a "
-               "free surface) or harmonic (2ab/(a + b), nested as MFIX's AVG_H; exact for "
-               "piecewise-constant layers). docs/solver.md gives the measurements behind the "
-               "default."),
+               "free surface), harmonic (2ab/(a + b), nested as MFIX's AVG_H; exact for "
+               "piecewise-constant layers) or yield-bounded (for the solids, the mean of the "
+               "cells' viscosities each taken at the edge's strain rate γ̇_e, the mean of the "
+               "fluid cells' γ̇ around it, as a plastic stress is: a cell that shears slower than "
+               "the edge gives its stress over the edge's rate, μ_c γ̇_c/γ̇_e, so an edge between "
+               "a rigid cell and a flowing one carries no more stress than its cells do; the "
+               "gas's arithmetic). docs/solver.md gives the measurements behind the default."),
       key(&Numerics::viscosity_linearization, "viscosity_linearization").init()
           .one_of(choice_names(viscosity_linearization_choices))
           .doc("How the solids momentum rows of an outer iteration take the closure's μ_s(γ̇). "

@@ -182,7 +182,7 @@ TEST(FullStress, SteadyShearNormalStressesAreAppendixAEquation15UnderADilatantGr
 
 // A Couette flow along x across y: μ = 1 below y = H/2, 10⁴ above, walls at y = 0 and H; the
 // exact profile u(y) is linear in each layer with the same shear stress τ in both.
-double couette_imbalance(const std::string& average) {
+double couette_imbalance(const std::string& average, bool plastic_rates = false) {
   StressRows s(unit_deck(4, 8, 4, "\"x\", \"z\"", 0.0, two_fluid("plastic", false) +
                                                            "[numerics]\nviscosity_average = \"" + average + "\"\n"));
   const double H = 0.08, mu_low = 1.0, mu_high = 1e4, tau = 5.0;
@@ -193,6 +193,8 @@ double couette_imbalance(const std::string& average) {
     const double u = y <= 0.5 * H ? tau * y / mu_low : tau * (0.5 * H) / mu_low + tau * (y - 0.5 * H) / mu_high;
     s.c.state.solids_velocity[0][i] = u;
     s.fields.viscosity[solids][i] = s.c.centre(l)[1] < 0.5 * H ? mu_low : mu_high;
+    // Each layer's own strain rate τ/μ, as a plastic closure (μ = τ/γ̇) would give it.
+    if (plastic_rates) s.fields.strain_rate[i] = tau / s.fields.viscosity[solids][i];
   }
   s.c.old = s.c.state;
   const auto force = s.stress_force(solids, 0);
@@ -210,6 +212,19 @@ double couette_imbalance(const std::string& average) {
 TEST(FullStress, TwoLayerCouetteProfileIsExactWithHarmonicViscosities) {
   EXPECT_LT(couette_imbalance("harmonic"), 1e-9);
   EXPECT_GT(couette_imbalance("arithmetic"), 0.1);  // the interface's edge viscosity is wrong
+}
+
+// The same two layers as a plastic material: both carry the yield stress τ, the upper one
+// nearly rigid (γ̇ = τ/μ = 5·10⁻⁴ 1/s against 5 1/s). With arithmetic means the interface's edge
+// takes half the rigid layer's viscosity on the mean of the two shear rates and carries about
+// 2,500 τ; with yield-bounded means the rigid cells there count with their stress over the
+// edge's rate, and the edge carries (1 + γ̇_e/γ̇_low)/2 τ ≈ 0.75 τ: within the cells' stresses,
+// so no row is out of balance by more than a quarter of τ A.
+TEST(FullStress, YieldBoundedEdgesKeepARigidLayerToItsYieldStress) {
+  const double bounded = couette_imbalance("yield-bounded", true);
+  EXPECT_LT(bounded, 0.26);
+  EXPECT_GT(bounded, 0.24);  // (1 − γ̇_e/γ̇_low)/2 with γ̇_e the two layers' mean rate
+  EXPECT_GT(couette_imbalance("arithmetic", true), 1000.0);
 }
 
 // numerics.shear_on_opening_faces: a plug over a 1 cm hole in the floor of a 3 × 3 × 3 box

@@ -51,8 +51,8 @@
 // tangential force on it, D (u_wall − u_P) summed over its faces along a wall (no slip, or a
 // partial-slip law's c_w A), which the monitor sums (wall_shear_* columns).
 #include <algorithm>
-#include <initializer_list>
 #include <cmath>
+#include <initializer_list>
 #include <utility>
 
 #include "solver/simple/face_fractions.hpp"

@@ -81,13 +81,15 @@ double mean_viscosity(deck::ViscosityAverage average, double a, double b) {
 // stresses; an edge turning in rigid rotation beside a stagnant corner then becomes a stiff
 // constraint that the segregated outer iteration does not converge (docs/solver.md, "What holds
 // the bin back under a force test"). The bound keeps the edge's stress within its cells'.
-template <class Viscosity, class Rate, class Fluid>
-double yield_bounded_mean(std::initializer_list<int> cells, Viscosity viscosity, Rate rate, Fluid fluid) {
+// `rate` gives a cell's γ̇_c for a fluid cell and a negative value for any other (which counts
+// with its own viscosity and not in γ̇_e); -1: no cell.
+template <class Viscosity, class Rate>
+double yield_bounded_mean(std::initializer_list<int> cells, Viscosity viscosity, Rate rate) {
   double rate_sum = 0.0, fluid_cells = 0.0, count = 0.0;
   for (const int c : cells) {
     if (c < 0) continue;
     count += 1.0;
-    if (fluid(c)) rate_sum += rate(c), fluid_cells += 1.0;
+    if (const double own = rate(c); own >= 0.0) rate_sum += own, fluid_cells += 1.0;
   }
   if (count == 0.0) return 0.0;
   const double edge_rate = fluid_cells > 0.0 ? rate_sum / fluid_cells : 0.0;
@@ -95,7 +97,7 @@ double yield_bounded_mean(std::initializer_list<int> cells, Viscosity viscosity,
   for (const int c : cells) {
     if (c < 0) continue;
     const double own = rate(c);
-    sum += viscosity(c) * (fluid(c) && own < edge_rate ? own / edge_rate : 1.0);
+    sum += viscosity(c) * (own >= 0.0 && own < edge_rate ? own / edge_rate : 1.0);
   }
   return sum / count;
 }
@@ -143,17 +145,17 @@ void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d
   auto mean = [average](double a, double b) { return mean_viscosity(average, a, b); };
   const bool yield_bounded = phase == solids && average == deck::ViscosityAverage::yield_bounded;
   const auto& rate = in.closures.strain_rate;
-  auto rate_of = [&](int local) { return rate[static_cast<std::size_t>(local)]; };
-  auto fluid = [&](int local) { return layout.kind(local) == grid::CellKind::fluid; };
-  auto bounded = [&](std::initializer_list<int> cells) {
-    return yield_bounded_mean(cells, viscosity, rate_of, fluid);
+  auto fluid_rate = [&](int local) {
+    return layout.kind(local) == grid::CellKind::fluid ? rate[static_cast<std::size_t>(local)] : -1.0;
   };
+  auto bounded = [&](std::initializer_list<int> cells) { return yield_bounded_mean(cells, viscosity, fluid_rate); };
   // The mean viscosity of each local cell and its + neighbour along d (the cell's own without
   // one), once per cell: a wall face takes its row's, an edge the mean of two rows' (each row
-  // shares its cells' pair with the rows beside it).
+  // shares its cells' pair with the rows beside it); the yield-bounded edges take their cells
+  // themselves.
   auto& pair_viscosity = scratch.secant;
   pair_viscosity.resize(static_cast<std::size_t>(layout.local_count()));
-  for (int l = 0; l < layout.local_count(); ++l) {
+  for (int l = 0; !yield_bounded && l < layout.local_count(); ++l) {
     const int n = layout.neighbour(l, 2 * d + 1);
     pair_viscosity[static_cast<std::size_t>(l)] = n >= 0 ? mean(viscosity(l), viscosity(n)) : viscosity(l);
   }

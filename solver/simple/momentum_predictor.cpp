@@ -174,22 +174,21 @@ bool MomentumPredictor::predict(int d, const Inputs& in, run::FlowState& state,
         mfix_scale = std::abs(eliminated) * speed;
         mfix_counted = speed > mfix_least_speed && (phase == gas || row.fraction > mfix_dilute_fraction);
       }
-      const double row_residual = residual[phase].add(
-          phase == gas ? gas_sums : solids_sums,
-          {.diagonal = A, .operator_u = A * u - row.neighbours_u,
-           .operator_one = A - row.neighbours_a, .source = row.b + beta_v * u_other + eliminated_part,
-           .transient = row.transient, .weight = row.weight,
-           .force = row.force + std::abs(beta_v * (u_other - u)),
-           .mfix_scale = mfix_scale, .mfix_counted = mfix_counted});
+      const MomentumResidual::Row terms{
+          .diagonal = A, .operator_u = A * u - row.neighbours_u,
+          .operator_one = A - row.neighbours_a, .source = row.b + beta_v * u_other + eliminated_part,
+          .transient = row.transient, .weight = row.weight,
+          .force = row.force + std::abs(beta_v * (u_other - u)),
+          .mfix_scale = mfix_scale, .mfix_counted = mfix_counted};
+      const double row_residual = residual[phase].add(phase == gas ? gas_sums : solids_sums, terms);
       worst.record((phase == gas ? gas_momentum_x : solids_momentum_x) + d, row_residual, l);
       if (m_row_trace.on())
-        m_row_trace.report(disc.domain(), layout.comm().rank(), layout.comm().size(),
+        m_row_trace.report(disc.domain(), layout.comm(),
                            {.phase = phase, .component = d, .owner = layout.natural(l),
                             .plus = n >= 0 ? layout.natural(n) : -1,
-                            .residual = row.b + beta_v * u_other + eliminated_part - (A * u - row.neighbours_u),
-                            .weight = row.weight, .force = row.force + std::abs(beta_v * (u_other - u)),
-                            .diagonal = A, .velocity = u, .sources = row.b + beta_v * u_other,
-                            .neighbours = row.neighbours_u, .viscous = row.viscous});
+                            .residual = terms.source - terms.operator_u, .weight = terms.weight,
+                            .force = terms.force, .diagonal = terms.diagonal, .velocity = u,
+                            .sources = terms.source, .neighbours = row.neighbours_u, .viscous = row.viscous});
     };
 
     if (g) {

@@ -18,31 +18,28 @@ RowTrace::RowTrace() {
 }
 
 bool RowTrace::selects(const Row& row) const {
-  if (!m_fraction) return false;
-  const double scale = row.weight > 0.0 ? row.weight : row.force;
-  return std::abs(row.residual) > *m_fraction * scale;
+  return m_fraction && std::abs(row.residual) > *m_fraction * scale(row);
 }
 
 std::string RowTrace::line(const parallel::Domain& domain, const Row& row) const {
-  const int equation = (row.phase == 0 ? gas_momentum_x : solids_momentum_x) + row.component;
-  const CellLocation where = locate_row(domain, equation, row.owner, row.plus);
-  const double scale = row.weight > 0.0 ? row.weight : row.force;
+  const CellLocation where = locate_row(domain, momentum_equation(row.phase, row.component), row.owner, row.plus);
+  const double against = scale(row);
   char text[512];
   std::snprintf(text, sizeof text,
                 "row %s %c (%d, %d, %d) %s: r/w = %.3g, r = %.4g N, F = %.4g N, A = %.4g kg/s, "
                 "u = %.6g m/s, b = %.6g N, sum a_nb u_nb = %.6g N, viscous = %.4g N",
                 row.phase == 0 ? "gas" : "solids", static_cast<char>('x' + row.component),
                 where.cell[0], where.cell[1], where.cell[2], where.face.c_str(),
-                scale > 0.0 ? row.residual / scale : 0.0, row.residual, row.force, row.diagonal,
+                against > 0.0 ? row.residual / against : 0.0, row.residual, row.force, row.diagonal,
                 row.velocity, row.sources, row.neighbours, row.viscous);
   return text;
 }
 
-void RowTrace::report(const parallel::Domain& domain, int rank, int ranks, const Row& row) const {
+void RowTrace::report(const parallel::Domain& domain, const parallel::Communicator& comm, const Row& row) const {
   if (!selects(row)) return;
   const std::string text = line(domain, row);
-  if (ranks > 1)
-    std::fprintf(stderr, "    [rank %d] %s\n", rank, text.c_str());
+  if (comm.size() > 1)
+    std::fprintf(stderr, "    [rank %d] %s\n", comm.rank(), text.c_str());
   else
     std::fprintf(stderr, "    %s\n", text.c_str());
 }

@@ -10,6 +10,7 @@
 #include <optional>
 #include <string>
 
+#include "src/parallel/communicator.hpp"
 #include "src/parallel/domain.hpp"
 
 namespace bagnold::solver {
@@ -26,7 +27,7 @@ class RowTrace {
     double force = 0.0;      // F of the force norm (momentum_residual.hpp)
     double diagonal = 0.0;   // A
     double velocity = 0.0;   // u
-    double sources = 0.0;    // b + βV u_other
+    double sources = 0.0;    // s: b + βV u_other (and, under "mfix", the eliminated drag's part)
     double neighbours = 0.0; // Σ a_nb u_nb
     double viscous = 0.0;    // the viscous force on the control volume
   };
@@ -43,9 +44,12 @@ class RowTrace {
   // The row's line, without the newline: "row solids x (i, j, k) +x: r/w = ..., ...".
   std::string line(const parallel::Domain& domain, const Row& row) const;
   // Prints the line on stderr if the row is selected (with the rank when there are several).
-  void report(const parallel::Domain& domain, int rank, int ranks, const Row& row) const;
+  void report(const parallel::Domain& domain, const parallel::Communicator& comm, const Row& row) const;
 
  private:
+  // What a row's residual is measured against: its weight, or its force F where it has none.
+  static double scale(const Row& row) { return row.weight > 0.0 ? row.weight : row.force; }
+
   std::optional<double> m_fraction;
 };
 

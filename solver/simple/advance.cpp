@@ -88,9 +88,16 @@ StepResult FlowSolver::advance(run::FlowState& state, const run::FlowState& old,
   const ScopedWorkClock clock(ScopedWorkClock::step);  // this rank's balance (work_clock.hpp)
   StepResult result;
   apply_boundary_values(state);
-  // BAGNOLD_TRACE=1: every outer iteration's residuals and the cell of the largest, on stderr.
+  // BAGNOLD_TRACE=1: a line naming the step's dt and the columns, then every outer iteration's
+  // residuals and the cell of the largest, on stderr.
   const bool trace = std::getenv("BAGNOLD_TRACE") != nullptr;
   const auto& comm = m_discretization.layout().comm();
+  if (trace && comm.is_root()) {
+    std::fprintf(stderr, "  step of dt = %.6g s, residuals of:", dt);
+    for (int equation = 0; equation < equation_count; ++equation)
+      std::fprintf(stderr, "%s %s", equation == 0 ? "" : ",", equation_name(equation));
+    std::fprintf(stderr, "\n");
+  }
   const double largest_scale = scale_growth_cap * residual_velocity_scale(old, INFINITY, nullptr);
   if (m_pressure) m_pressure->start_step();
   if (m_anderson) m_anderson->start_step(old);

@@ -149,15 +149,28 @@ void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d
     return layout.kind(local) == grid::CellKind::fluid ? rate[static_cast<std::size_t>(local)] : -1.0;
   };
   auto bounded = [&](std::initializer_list<int> cells) { return yield_bounded_mean(cells, viscosity, fluid_rate); };
-  // The mean viscosity of each local cell and its + neighbour along d (the cell's own without
-  // one), once per cell: a wall face takes its row's, an edge the mean of two rows' (each row
-  // shares its cells' pair with the rows beside it); the yield-bounded edges take their cells
-  // themselves.
+  // Once per cell: the mean viscosity of each local cell and its + neighbour along d (the cell's
+  // own without one), which a wall face takes for its row and an edge averages over the two rows
+  // beside it; or, yield-bounded, each edge's viscosity from its four cells, stored at the lower
+  // pair along e, so the rows above and below the edge take the same value.
   auto& pair_viscosity = scratch.secant;
-  pair_viscosity.resize(static_cast<std::size_t>(layout.local_count()));
-  for (int l = 0; !yield_bounded && l < layout.local_count(); ++l) {
-    const int n = layout.neighbour(l, 2 * d + 1);
-    pair_viscosity[static_cast<std::size_t>(l)] = n >= 0 ? mean(viscosity(l), viscosity(n)) : viscosity(l);
+  if (yield_bounded) {
+    for (int e = 0; e < 3; ++e) {
+      if (e == d) continue;
+      auto& edge = scratch.bounded_edge[static_cast<std::size_t>(e)];
+      edge.resize(static_cast<std::size_t>(layout.local_count()));
+      for (int l = 0; l < layout.local_count(); ++l) {
+        const int m = layout.neighbour(l, 2 * e + 1);
+        edge[static_cast<std::size_t>(l)] = bounded({l, layout.neighbour(l, 2 * d + 1), m,
+                                                     m >= 0 ? layout.neighbour(m, 2 * d + 1) : -1});
+      }
+    }
+  } else {
+    pair_viscosity.resize(static_cast<std::size_t>(layout.local_count()));
+    for (int l = 0; l < layout.local_count(); ++l) {
+      const int n = layout.neighbour(l, 2 * d + 1);
+      pair_viscosity[static_cast<std::size_t>(l)] = n >= 0 ? mean(viscosity(l), viscosity(n)) : viscosity(l);
+    }
   }
   // numerics.shear_on_opening_faces = false: an edge with an opening's outside cell among its
   // four cells (c, n and their neighbours across the face) shears nothing, as MFIX's zero
@@ -257,7 +270,7 @@ void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d
           // The edge between c, n and their neighbours m, m' across the face.
           const int m = link.local;
           const double edge_mu =
-              yield_bounded ? bounded({l, n, m, m >= 0 ? layout.neighbour(m, 2 * d + 1) : -1})
+              yield_bounded ? scratch.bounded_edge[static_cast<std::size_t>(e)][static_cast<std::size_t>(s > 0 ? l : m)]
                             : mean(pair_viscosity[static_cast<std::size_t>(l)], pair_viscosity[static_cast<std::size_t>(m)]);
           diffusion = edge_mu * area / (0.5 * (disc.width(l, e) + disc.width(m, e)));
           if (newton) {

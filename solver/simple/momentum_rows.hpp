@@ -62,12 +62,16 @@ struct MomentumAssemblyInputs {
 };
 
 // Scratch of the assembly (sized there), per local cell: the mean viscosity of the cell and its
-// + neighbour along d; under numerics.viscosity_linearization = "newton" (solids), the same of
-// the tangent viscosities μ_s f_de that the faces normal to each direction e take; and the mass
-// flux per unit area and density through the cell's face along each e (its velocity times the
-// fraction carried there), which the rows of up to four control volumes read.
+// + neighbour along d; under numerics.viscosity_average = "yield-bounded" (solids) instead, per
+// direction e ≠ d, the viscosity of the edge between the cell, its + neighbour along d and the
+// two cells above them along e, which the rows on both sides of the edge read; under
+// numerics.viscosity_linearization = "newton" (solids), the pair means of the tangent
+// viscosities μ_s f_de that the faces normal to each direction e take; and the mass flux per
+// unit area and density through the cell's face along each e (its velocity times the fraction
+// carried there), which the rows of up to four control volumes read.
 struct MomentumAssemblyScratch {
   std::vector<double> secant;
+  std::array<std::vector<double>, 3> bounded_edge;
   std::array<std::vector<double>, 3> tangent;
   std::array<std::vector<double>, 3> flux;
 };

@@ -119,9 +119,12 @@ StepResult FlowSolver::advance(run::FlowState& state, const run::FlowState& old,
       result.abandoned = true;
       return result;
     }
-    for (int e = 0; e < 6; ++e)
-      result.residuals.value[static_cast<std::size_t>(e)] =
-          sums.normalization[static_cast<std::size_t>(e)].value(sums.momentum[static_cast<std::size_t>(e)]);
+    result.force_balance = 0.0;
+    for (int e = 0; e < 6; ++e) {
+      const auto& momentum = sums.momentum[static_cast<std::size_t>(e)];
+      result.residuals.value[static_cast<std::size_t>(e)] = sums.normalization[static_cast<std::size_t>(e)].value(momentum);
+      result.force_balance = std::max(result.force_balance, MomentumResidual::force_balance(momentum));
+    }
     // A flow at rest has no throughput: measure against the flux the velocity scale would carry.
     // Under the force norm the solids' sums are forces, their scale never 0
     // (volume_fraction_correction.cpp).

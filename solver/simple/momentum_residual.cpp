@@ -8,9 +8,11 @@
 namespace bagnold::solver {
 
 double MomentumResidual::add(Sums& sums, const Row& row) const {
-  auto& [residual, norm, net, total_weight] = sums.values;
-  if (m_kind == ResidualNormalization::mfix && !row.mfix_counted) return 0.0;
+  auto& [residual, norm, net, total_weight, every_residual, every_force] = sums.values;
   const double row_residual = std::abs(row.source - row.operator_u);
+  every_residual += row_residual;
+  every_force += row.force;
+  if (m_kind == ResidualNormalization::mfix && !row.mfix_counted) return 0.0;
   residual += row_residual;
   net += row.source - row.operator_u;
   total_weight += row.weight;
@@ -34,10 +36,15 @@ double MomentumResidual::add(Sums& sums, const Row& row) const {
 }
 
 double MomentumResidual::value(const Sums& total) const {
-  const auto& [residual, norm, net, weight] = total.values;
+  const auto& [residual, norm, net, weight, every_residual, every_force] = total.values;
   const double normalized = residual <= 1e-300 ? 0.0 : residual / std::max(norm, 1e-300);
   if (!m_net_force) return normalized;
   return weight > 0.0 ? std::max(normalized, std::abs(net) / weight) : normalized;
+}
+
+double MomentumResidual::force_balance(const Sums& total) {
+  const double residual = total.values[4], force = total.values[5];
+  return residual <= 1e-300 ? 0.0 : residual / std::max(force, 1e-300);
 }
 
 }  // namespace bagnold::solver

@@ -51,11 +51,12 @@ inline ResidualNormalization residual_normalization_from_name(const std::string&
 // 10⁴ (the free-slip chute accepted steps 6 % short of g sin θ at tolerance 1e-4).
 class MomentumResidual {
  public:
-  // The local sums of one phase and component: Σ|s − L u|, the normalization, Σ (s − L u) and
-  // Σ ε ρ V |g|. Added over the ranks with every other residual of the outer iteration
-  // (IterationSums::reduce), then turned into the normalized residual by value().
+  // The local sums of one phase and component: Σ|s − L u|, the normalization, Σ (s − L u),
+  // Σ ε ρ V |g|, and over every row (those "mfix" leaves out too) Σ|s − L u| and Σ F. Added over
+  // the ranks with every other residual of the outer iteration (IterationSums::reduce), then
+  // turned into the normalized residual by value() and the force balance by force_balance().
   struct Sums {
-    static constexpr std::size_t size = 4;
+    static constexpr std::size_t size = 6;
     std::array<double, size> values{};
   };
 
@@ -82,6 +83,11 @@ class MomentumResidual {
 
   // The normalized residual from sums over all ranks (0 without any residual).
   double value(const Sums& total) const;
+
+  // Whatever the normalization: Σ|s − L u| / Σ F over every row, the residual the "force" norm
+  // gives (0 without any residual). The monitor's `force_residual` column reports it for every
+  // accepted step, so a step that another norm accepted with its forces unbalanced shows.
+  static double force_balance(const Sums& total);
 
  private:
   ResidualNormalization m_kind = ResidualNormalization::velocity_scale;

@@ -135,6 +135,10 @@ struct StepResult {
   // What the last outer iteration was judged by against numerics.tolerance: the largest
   // normalized residual, or under numerics.residual_normalization = "mfix" their sum.
   double judged = 0.0;
+  // The last outer iteration's momentum residuals against the forces that act, whatever
+  // numerics.residual_normalization judged it by: the largest over both phases and the three
+  // components of MomentumResidual::force_balance (the "force" norm's momentum residual).
+  double force_balance = 0.0;
   // "diverged" when a residual became non-finite or the largest grew over the step's outer
   // iterations; "stalled" when it fell but not below the tolerance.
   bool diverged() const;

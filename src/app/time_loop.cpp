@@ -30,6 +30,7 @@ std::vector<std::string> monitor_columns(const deck::Deck& deck, const parallel:
   for (int i = 0; i < solver::intervention_count; ++i) columns.push_back(solver::intervention_name(i));
   for (int k = 0; k < solver::linear_system_count; ++k) columns.push_back(solver::linear_system_name(k));
   columns.push_back("courant");
+  columns.push_back("force_residual");
   return columns;
 }
 
@@ -51,6 +52,7 @@ std::vector<double> monitor_row(const TimeLoopContext& context, const FlowSolver
   row.insert(row.end(), step.interventions.begin(), step.interventions.end());
   row.insert(row.end(), step.linear_iterations.begin(), step.linear_iterations.end());
   row.push_back(courant);
+  row.push_back(step.force_balance);
   return row;
 }
 
@@ -139,6 +141,7 @@ RunSummary run_time_loop(const TimeLoopContext& context, FlowSolver& flow, run::
     time += dt_try;
     ++step;
     summary.last_dt = dt_try;
+    summary.force_balance.add(result.force_balance, time, context.deck.numerics.tolerance);
     const double courant = flow.courant_number(state, dt_try);
     const auto row = monitor_row(context, flow, state, dt_try, result, courant);  // collective
     // Rank 0 writes the row; all ranks stop together if it cannot (a full disk).

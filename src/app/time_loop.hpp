@@ -29,6 +29,32 @@ namespace bagnold::app {
 using solver::FlowSolver;
 using solver::StepResult;
 
+// The accepted steps' momentum residuals against the forces that act (StepResult::force_balance,
+// monitor column `force_residual`): the largest and when, and how many steps exceeded the
+// tolerance. Under numerics.residual_normalization = "force" none can; under another norm the
+// run's last line reports them (run_command.cpp).
+struct ForceBalanceRecord {
+  double largest = 0.0;
+  double largest_at = 0.0;  // [s], the end of that step
+  long steps = 0, above_tolerance = 0;
+  void add(double value, double time, double tolerance) {
+    if (!(value <= largest)) {
+      largest = value;
+      largest_at = time;
+    }
+    ++steps;
+    if (value > tolerance) ++above_tolerance;
+  }
+  void add(const ForceBalanceRecord& later) {
+    if (!(later.largest <= largest)) {
+      largest = later.largest;
+      largest_at = later.largest_at;
+    }
+    steps += later.steps;
+    above_tolerance += later.above_tolerance;
+  }
+};
+
 struct RunSummary {
   bool completed = false;
   double time = 0.0;
@@ -41,6 +67,7 @@ struct RunSummary {
   // Stopped for numerics.repartition_imbalance after writing this snapshot: the caller
   // partitions anew and continues from it.
   std::string repartition_from;
+  ForceBalanceRecord force_balance;
 
   // The run so far followed by `later`, a segment after it: counts added, its outcome kept.
   void continue_with(const RunSummary& later) {
@@ -53,6 +80,7 @@ struct RunSummary {
     interrupted = later.interrupted;
     failure = later.failure;
     repartition_from = later.repartition_from;
+    force_balance.add(later.force_balance);
   }
 };
 

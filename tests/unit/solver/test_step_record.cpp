@@ -74,6 +74,29 @@ TEST(MomentumResidual, ForceNormalizesByTheForcesThatAct) {
   EXPECT_EQ(value_of(residual, {{1.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0}}), 0.0);
 }
 
+TEST(MomentumResidual, ForceBalanceIsTheForceNormsResidualUnderEveryNorm) {
+  // The plug row above: 1 % of its weight unbalanced. Every norm's sums give the force norm's
+  // 1e-2 through force_balance, while their own value() differs (the velocity scale's 1e-8).
+  const double a = 2e6 + 2e3, W = 2.0;
+  Row plug{a, a * 1.0 - 2e6, 2e3, 2e3 * 1.0 - 0.01 * W, 2e3, W, W};
+  for (const auto kind : {ResidualNormalization::velocity_scale, ResidualNormalization::deviation,
+                          ResidualNormalization::force, ResidualNormalization::mfix}) {
+    MomentumResidual::Sums sums;
+    MomentumResidual(kind, 1.0, 1.0, 0.0).add(sums, plug);
+    EXPECT_NEAR(MomentumResidual::force_balance(sums), 0.01, 1e-12);
+  }
+  // Rows "mfix" leaves out of its own sums still count: a row at rest carrying its whole weight
+  // unbalanced doubles the residual over twice the force.
+  Row at_rest{a, 0.0, 2e3, W, 2e3, W, W};
+  at_rest.mfix_counted = false;
+  MomentumResidual::Sums sums;
+  const MomentumResidual mfix(ResidualNormalization::mfix, 1.0, 1.0, 0.0);
+  mfix.add(sums, plug);
+  mfix.add(sums, at_rest);
+  EXPECT_NEAR(MomentumResidual::force_balance(sums), (0.01 * W + W) / (2.0 * W), 1e-12);
+  EXPECT_EQ(MomentumResidual::force_balance(MomentumResidual::Sums{}), 0.0);  // nothing: 0, not 0/0
+}
+
 TEST(MomentumResidual, MfixNormalizesByDiagonalTimesSpeedOverTheRowsItCounts) {
   // MFIX's CALC_RESID_U: Σ|s − Lu| over Σ |A_e| |u| of the counted rows; a row MFIX skips (at
   // rest, or dilute solids) is in neither sum, however large its residual.

@@ -123,7 +123,10 @@ StepResult FlowSolver::advance(run::FlowState& state, const run::FlowState& old,
     for (int e = 0; e < 6; ++e) {
       const auto& momentum = sums.momentum[static_cast<std::size_t>(e)];
       result.residuals.value[static_cast<std::size_t>(e)] = sums.normalization[static_cast<std::size_t>(e)].value(momentum);
-      result.force_balance = std::max(result.force_balance, MomentumResidual::force_balance(momentum));
+      if (const double balance = MomentumResidual::force_balance(momentum); balance > result.force_balance) {
+        result.force_balance = balance;
+        result.force_balance_equation = e;
+      }
     }
     // A flow at rest has no throughput: measure against the flux the velocity scale would carry.
     // Under the force norm the solids' sums are forces, their scale never 0

@@ -139,6 +139,7 @@ struct StepResult {
   // numerics.residual_normalization judged it by: the largest over both phases and the three
   // components of MomentumResidual::force_balance (the "force" norm's momentum residual).
   double force_balance = 0.0;
+  int force_balance_equation = 0;  // the momentum Equation it is of
   // "diverged" when a residual became non-finite or the largest grew over the step's outer
   // iterations; "stalled" when it fell but not below the tolerance.
   bool diverged() const;

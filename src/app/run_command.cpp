@@ -236,9 +236,10 @@ int run_command(const DeckArguments& args) {
                     result.time, result.steps, result.redone_steps, per_step, wall));
     if (const auto& balance = result.force_balance; balance.steps > 0)
       say(fmt::format("bagnold run: momentum residual against the acting forces (monitor column "
-                      "force_residual): largest {:.3g} (step ending at t = {:.6g} s), above "
+                      "force_residual): largest {:.3g} ({}, step ending at t = {:.6g} s), above "
                       "numerics.tolerance in {} of {} steps",
-                      balance.largest, balance.largest_at, balance.above_tolerance, balance.steps));
+                      balance.largest, solver::equation_name(balance.largest_equation),
+                      balance.largest_at, balance.above_tolerance, balance.steps));
     if (!rank_table.empty())
       say("bagnold run: per rank, over the run (wait: in MPI, during assembly and solves)\n" + rank_table);
     if (result.interrupted) {

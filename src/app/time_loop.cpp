@@ -141,7 +141,8 @@ RunSummary run_time_loop(const TimeLoopContext& context, FlowSolver& flow, run::
     time += dt_try;
     ++step;
     summary.last_dt = dt_try;
-    summary.force_balance.add(result.force_balance, time, context.deck.numerics.tolerance);
+    summary.force_balance.add(result.force_balance, result.force_balance_equation, time,
+                              context.deck.numerics.tolerance);
     const double courant = flow.courant_number(state, dt_try);
     const auto row = monitor_row(context, flow, state, dt_try, result, courant);  // collective
     // Rank 0 writes the row; all ranks stop together if it cannot (a full disk).

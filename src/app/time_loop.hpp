@@ -30,17 +30,19 @@ using solver::FlowSolver;
 using solver::StepResult;
 
 // The accepted steps' momentum residuals against the forces that act (StepResult::force_balance,
-// monitor column `force_residual`): the largest and when, and how many steps exceeded the
-// tolerance. Under numerics.residual_normalization = "force" none can; under another norm the
-// run's last line reports them (run_command.cpp).
+// monitor column `force_residual`): the largest, when and in which equation, and how many steps
+// exceeded the tolerance. Under numerics.residual_normalization = "force" none can; under another
+// norm the run's last lines report them (run_command.cpp).
 struct ForceBalanceRecord {
   double largest = 0.0;
   double largest_at = 0.0;  // [s], the end of that step
+  int largest_equation = 0;  // solver::Equation
   long steps = 0, above_tolerance = 0;
-  void add(double value, double time, double tolerance) {
+  void add(double value, int equation, double time, double tolerance) {
     if (!(value <= largest)) {
       largest = value;
       largest_at = time;
+      largest_equation = equation;
     }
     ++steps;
     if (value > tolerance) ++above_tolerance;
@@ -49,6 +51,7 @@ struct ForceBalanceRecord {
     if (!(later.largest <= largest)) {
       largest = later.largest;
       largest_at = later.largest_at;
+      largest_equation = later.largest_equation;
     }
     steps += later.steps;
     above_tolerance += later.above_tolerance;

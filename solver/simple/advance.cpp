@@ -120,6 +120,7 @@ StepResult FlowSolver::advance(run::FlowState& state, const run::FlowState& old,
       return result;
     }
     result.force_balance = 0.0;
+    result.force_balance_equation = 0;
     for (int e = 0; e < 6; ++e) {
       const auto& momentum = sums.momentum[static_cast<std::size_t>(e)];
       result.residuals.value[static_cast<std::size_t>(e)] = sums.normalization[static_cast<std::size_t>(e)].value(momentum);

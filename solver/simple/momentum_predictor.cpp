@@ -176,10 +176,10 @@ bool MomentumPredictor::predict(int d, const Inputs& in, run::FlowState& state,
       }
       const MomentumResidual::Row terms{
           .diagonal = A, .operator_u = A * u - row.neighbours_u,
-          .operator_one = A - row.neighbours_a, .source = row.b + beta_v * u_other + eliminated_part,
+          .operator_one = A - row.neighbours_a, .source = row.b + beta_v * u_other,
           .transient = row.transient, .weight = row.weight,
           .force = row.force + std::abs(beta_v * (u_other - u)),
-          .mfix_scale = mfix_scale, .mfix_counted = mfix_counted};
+          .mfix_scale = mfix_scale, .mfix_counted = mfix_counted, .mfix_coupling = eliminated_part};
       const double row_residual = residual[phase].add(phase == gas ? gas_sums : solids_sums, terms);
       worst.record((phase == gas ? gas_momentum_x : solids_momentum_x) + d, row_residual, l);
       if (m_row_trace.on())

@@ -9,12 +9,13 @@ namespace bagnold::solver {
 
 double MomentumResidual::add(Sums& sums, const Row& row) const {
   auto& [residual, norm, net, total_weight, every_residual, every_force] = sums.values;
-  const double row_residual = std::abs(row.source - row.operator_u);
-  every_residual += row_residual;
+  every_residual += std::abs(row.source - row.operator_u);
   every_force += row.force;
-  if (m_kind == ResidualNormalization::mfix && !row.mfix_counted) return 0.0;
+  const bool mfix = m_kind == ResidualNormalization::mfix;
+  if (mfix && !row.mfix_counted) return 0.0;
+  const double row_residual = std::abs(row.source + (mfix ? row.mfix_coupling : 0.0) - row.operator_u);
   residual += row_residual;
-  net += row.source - row.operator_u;
+  net += row.source + (mfix ? row.mfix_coupling : 0.0) - row.operator_u;
   total_weight += row.weight;
   switch (m_kind) {
     case ResidualNormalization::force:
@@ -43,8 +44,8 @@ double MomentumResidual::value(const Sums& total) const {
 }
 
 double MomentumResidual::force_balance(const Sums& total) {
-  const double residual = total.values[4], force = total.values[5];
-  return residual <= 1e-300 ? 0.0 : residual / std::max(force, 1e-300);
+  const auto& [residual, norm, net, weight, every_residual, every_force] = total.values;
+  return every_residual <= 1e-300 ? 0.0 : every_residual / std::max(every_force, 1e-300);
 }
 
 }  // namespace bagnold::solver

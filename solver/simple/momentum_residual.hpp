@@ -68,6 +68,9 @@ class MomentumResidual {
     double weight = 0.0, force = 0.0;
     double mfix_scale = 0.0;   // "mfix": |A_e| |u|
     bool mfix_counted = true;  // "mfix": whether the row counts (|u| and ε_s above MFIX's floors)
+    // "mfix": (βV/A_o) r_o, the other phase's row residual carried by the drag's partial
+    // elimination, which MFIX's CALC_RESID_U adds to the row's residual (only there).
+    double mfix_coupling = 0.0;
   };
 
   MomentumResidual() = default;
@@ -84,9 +87,10 @@ class MomentumResidual {
   // The normalized residual from sums over all ranks (0 without any residual).
   double value(const Sums& total) const;
 
-  // Whatever the normalization: Σ|s − L u| / Σ F over every row, the residual the "force" norm
-  // gives (0 without any residual). The monitor's `force_residual` column reports it for every
-  // accepted step, so a step that another norm accepted with its forces unbalanced shows.
+  // Whatever the normalization: Σ|s − L u| / Σ F over every row, the "force" norm's residual
+  // (without numerics.net_force_residual's bound; 0 without any residual). The monitor's
+  // `force_residual` column reports it for the state each accepted step was judged on, so a step
+  // that another norm accepted with its forces unbalanced shows.
   static double force_balance(const Sums& total);
 
  private:

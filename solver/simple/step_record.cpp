@@ -55,8 +55,8 @@ std::string CellLocation::text() const {
 }
 
 void IterationSums::reduce(const parallel::Communicator& comm) {
-  // One contiguous buffer, one Allreduce: 6 × 4 momentum sums, 2 × 2 continuity sums, 2 energy
-  // sums, counters, 2 × 3 wall forces.
+  // One contiguous buffer, one Allreduce: 6 × MomentumResidual::Sums::size momentum sums, 2 × 2
+  // continuity sums, 2 energy sums, counters, 2 × 3 wall forces, the stop request.
   constexpr std::size_t count = 6 * MomentumResidual::Sums::size + 4 + 2 + intervention_count + 6 + 1;
   std::array<double, count> buffer{};
   std::size_t k = 0;

@@ -135,7 +135,8 @@ struct StepResult {
   // What the last outer iteration was judged by against numerics.tolerance: the largest
   // normalized residual, or under numerics.residual_normalization = "mfix" their sum.
   double judged = 0.0;
-  // The last outer iteration's momentum residuals against the forces that act, whatever
+  // The momentum residuals of the state the last outer iteration judged (the iterate it started
+  // from, as every residual here) against the forces that act, whatever
   // numerics.residual_normalization judged it by: the largest over both phases and the three
   // components of MomentumResidual::force_balance (the "force" norm's momentum residual).
   double force_balance = 0.0;

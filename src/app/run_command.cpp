@@ -231,15 +231,20 @@ int run_command(const DeckArguments& args) {
     const double per_step = result.steps ? static_cast<double>(result.outer_iterations) /
                                                static_cast<double>(result.steps)
                                          : 0.0;
+    // Before the summary, which stays the last line of a completed run (tools read it).
+    if (const auto& balance = result.force_balance; result.steps > 0 && balance.largest >= 0.0)
+      say(fmt::format("bagnold run: momentum residual against the acting forces (monitor column "
+                      "force_residual): largest {:.3g}{}, above numerics.tolerance in {} of {} "
+                      "steps",
+                      balance.largest,
+                      balance.largest > 0.0
+                          ? fmt::format(" ({}, step ending at t = {:.6g} s)",
+                                        solver::equation_name(balance.largest_equation), balance.largest_at)
+                          : std::string(),
+                      balance.above_tolerance, result.steps));
     say(fmt::format("bagnold run: t = {:.6g} s after {} steps ({} redone), {:.2f} outer iterations "
                     "per step, {:.1f} s wall",
                     result.time, result.steps, result.redone_steps, per_step, wall));
-    if (const auto& balance = result.force_balance; balance.steps > 0)
-      say(fmt::format("bagnold run: momentum residual against the acting forces (monitor column "
-                      "force_residual): largest {:.3g} ({}, step ending at t = {:.6g} s), above "
-                      "numerics.tolerance in {} of {} steps",
-                      balance.largest, solver::equation_name(balance.largest_equation),
-                      balance.largest_at, balance.above_tolerance, balance.steps));
     if (!rank_table.empty())
       say("bagnold run: per rank, over the run (wait: in MPI, during assembly and solves)\n" + rank_table);
     if (result.interrupted) {

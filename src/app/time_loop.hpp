@@ -22,41 +22,13 @@
 #include "src/io/monitor.hpp"
 #include "src/run/output_writer.hpp"
 #include "src/run/progress.hpp"
+#include "src/app/force_balance_record.hpp"
 #include "src/run/rank_balance.hpp"
 
 namespace bagnold::app {
 
 using solver::FlowSolver;
 using solver::StepResult;
-
-// The accepted steps' momentum residuals against the forces that act (StepResult::force_balance,
-// monitor column `force_residual`): the largest, when and in which equation, and how many steps
-// exceeded the tolerance. Under numerics.residual_normalization = "force" none can; under another
-// norm the run's last lines report them (run_command.cpp).
-struct ForceBalanceRecord {
-  double largest = 0.0;
-  double largest_at = 0.0;  // [s], the end of that step
-  int largest_equation = 0;  // solver::Equation
-  long steps = 0, above_tolerance = 0;
-  void add(double value, int equation, double time, double tolerance) {
-    if (!(value <= largest)) {
-      largest = value;
-      largest_at = time;
-      largest_equation = equation;
-    }
-    ++steps;
-    if (value > tolerance) ++above_tolerance;
-  }
-  void add(const ForceBalanceRecord& later) {
-    if (!(later.largest <= largest)) {
-      largest = later.largest;
-      largest_at = later.largest_at;
-      largest_equation = later.largest_equation;
-    }
-    steps += later.steps;
-    above_tolerance += later.above_tolerance;
-  }
-};
 
 struct RunSummary {
   bool completed = false;

@@ -95,6 +95,14 @@ TEST(MomentumResidual, ForceBalanceIsTheForceNormsResidualUnderEveryNorm) {
   mfix.add(sums, at_rest);
   EXPECT_NEAR(MomentumResidual::force_balance(sums), (0.01 * W + W) / (2.0 * W), 1e-12);
   EXPECT_EQ(MomentumResidual::force_balance(MomentumResidual::Sums{}), 0.0);  // nothing: 0, not 0/0
+  // MFIX's residual carries the other phase's through the drag's elimination; the force balance
+  // does not: a row balanced on its own with (βV/A_o) r_o = 0.5 W is unbalanced only for "mfix".
+  Row coupled = plug;
+  coupled.source += 0.01 * W;  // balanced: s = L u
+  coupled.mfix_coupling = 0.5 * W;
+  MomentumResidual::Sums mfix_sums;
+  EXPECT_NEAR(mfix.add(mfix_sums, coupled), 0.5 * W, 1e-9);
+  EXPECT_NEAR(MomentumResidual::force_balance(mfix_sums), 0.0, 1e-12);
 }
 
 TEST(MomentumResidual, MfixNormalizesByDiagonalTimesSpeedOverTheRowsItCounts) {

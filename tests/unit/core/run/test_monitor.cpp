@@ -57,11 +57,27 @@ TEST_F(MonitorTest, ResumeDropsRowsAfterTheRestartTime) {
   EXPECT_EQ(contents(), "time,dt\n0,1\n0.1,2\n0.2,3\n0.30000000000000004,4\n0.35,6\n");
 }
 
-TEST_F(MonitorTest, ResumeWithOtherColumnsStartsAfresh) {
-  std::ofstream(m_path) << "time,dt,flux_orifice\n0,1,0\n0.1,2,0\n";
+TEST_F(MonitorTest, ResumeWithOtherColumnsKeepsTheRowsByName) {
+  // A run of an older build, without the last column: its rows stay, with nan there.
+  std::ofstream(m_path) << "time,dt,courant\n0,1,0.5\n0.1,2,0.25\n0.2,3,0.125\n";
   const double restart = 0.1;
-  io::Monitor m(m_path, {"dt", "flux_top"}, true, &restart);
-  EXPECT_EQ(contents(), "time,dt,flux_top\n");
+  io::Monitor m(m_path, {"dt", "courant", "force_residual"}, true, &restart);
+  EXPECT_EQ(contents(), "time,dt,courant,force_residual\n0,1,0.5,nan\n0.1,2,0.25,nan\n");
+  EXPECT_FALSE(fs::exists(m_path + ".before-restart"));  // nothing was dropped
+  m.append(0.15, {4.0, 0.5, 1e-3});
+  EXPECT_EQ(contents(), "time,dt,courant,force_residual\n0,1,0.5,nan\n0.1,2,0.25,nan\n0.15,4,0.5,0.001\n");
+}
+
+TEST_F(MonitorTest, ResumeThatDropsAColumnKeepsTheEarlierFileWhole) {
+  const std::string earlier = "time,dt,flux_orifice\n0,1,0\n0.1,2,0\n";
+  std::ofstream(m_path) << earlier;
+  const double restart = 0.1;
+  io::Monitor m(m_path, {"flux_top", "dt"}, true, &restart);
+  EXPECT_EQ(contents(), "time,flux_top,dt\n0,nan,1\n0.1,nan,2\n");
+  std::ifstream in(m_path + ".before-restart");
+  std::ostringstream s;
+  s << in.rdbuf();
+  EXPECT_EQ(s.str(), earlier);
 }
 
 TEST_F(MonitorTest, NewRunReplacesAnOldSeries) {

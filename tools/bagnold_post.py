@@ -225,6 +225,14 @@ def run_bagnold(bagnold, deck, ranks, sets):
     return subprocess.run(command, capture_output=True, text=True, env=env)
 
 
+def failure_line(text):
+    """Why a `bagnold run` failed: its "bagnold run: failed: ..." line (on stderr, which the
+    tools capture apart from stdout), else the output's last line."""
+    lines = [l for l in text.strip().splitlines() if l.strip()]
+    failed = [l for l in lines if l.startswith("bagnold run: failed:")]
+    return failed[-1] if failed else (lines[-1] if lines else "no output")
+
+
 def list_snapshots(run_dir):
     """[(time, path)] of the run's snapshots, in time order."""
     import h5py

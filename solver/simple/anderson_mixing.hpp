@@ -1,5 +1,5 @@
 #pragma once
-// Anderson mixing of the outer iteration (numerics.acceleration = "anderson").
+// Anderson mixing of the outer iteration (numerics.anderson_depth = m > 0).
 //
 // One outer iteration maps the iterate x to G(x) (closures, predictors, corrections). Plain
 // Picard takes x ← G(x). Anderson's type-II mixing (Walker & Ni, SIAM J. Numer. Anal. 49, 2011,

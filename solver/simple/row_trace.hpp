@@ -27,7 +27,7 @@ class RowTrace {
     double force = 0.0;      // F of the force norm (momentum_residual.hpp)
     double diagonal = 0.0;   // A
     double velocity = 0.0;   // u
-    double sources = 0.0;    // s: b + βV u_other (and, under "mfix", the eliminated drag's part)
+    double sources = 0.0;    // s: b + βV u_other
     double neighbours = 0.0; // Σ a_nb u_nb
     double viscous = 0.0;    // the viscous force on the control volume
   };

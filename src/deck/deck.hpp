@@ -137,7 +137,7 @@ struct Numerics {
   std::string algorithm = "simplec";     // simplec | simple
   std::string convection = "superbee";   // upwind | superbee | muscl | van_leer | minmod
   double tolerance = 1e-4;               // normalized residual for convergence of a step
-  std::string residual_normalization = "velocity-scale";  // velocity-scale | force | deviation
+  std::string residual_normalization = "velocity-scale";  // velocity-scale | force | deviation | mfix
   bool net_force_residual = false;  // also |Σ row residuals| / the phase's weight
   int max_outer_iterations = 40;         // before the step is redone with dt / 2
   bool detect_stall = false;             // redo a step whose largest residual stops falling

@@ -324,7 +324,7 @@ const Section<Numerics>& numerics_section() {
                "residuals (result minus start) are least in a norm that weighs each field by its "
                "scale (Walker & Ni 2011). It changes how a step converges, not the equations a "
                "converged step satisfies. Where a mixture would take ε_s below 0 or above the "
-               "largest ε_s the results hold, ε_s is clipped into that range (monitor column "
+               "largest ε_s of the latest result, ε_s is clipped into that range (monitor column "
                "limit_anderson_clipped)."),
       key(&Numerics::easy_outer_iterations, "easy_outer_iterations").init().within(1, 1000)
           .doc("A step converged in at most this many iterations lets dt grow."),

@@ -153,6 +153,15 @@ void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d
   // own without one), which a wall face takes for its row and an edge averages over the two rows
   // beside it; or, yield-bounded, each edge's viscosity from its four cells, stored at the lower
   // pair along e, so the rows above and below the edge take the same value.
+  // Per local cell, the mean of `value` over the cell and its + neighbour along d (the cell's own
+  // without one).
+  auto fill_pair_means = [&](std::vector<double>& pair, auto&& value) {
+    pair.resize(static_cast<std::size_t>(layout.local_count()));
+    for (int l = 0; l < layout.local_count(); ++l) {
+      const int n = layout.neighbour(l, 2 * d + 1);
+      pair[static_cast<std::size_t>(l)] = n >= 0 ? mean(value(l), value(n)) : value(l);
+    }
+  };
   auto& pair_viscosity = scratch.secant;
   if (yield_bounded) {
     for (int e = 0; e < 3; ++e) {
@@ -166,11 +175,7 @@ void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d
       }
     }
   } else {
-    pair_viscosity.resize(static_cast<std::size_t>(layout.local_count()));
-    for (int l = 0; l < layout.local_count(); ++l) {
-      const int n = layout.neighbour(l, 2 * d + 1);
-      pair_viscosity[static_cast<std::size_t>(l)] = n >= 0 ? mean(viscosity(l), viscosity(n)) : viscosity(l);
-    }
+    fill_pair_means(pair_viscosity, viscosity);
   }
   // numerics.shear_on_opening_faces = false: an edge with an opening's outside cell among its
   // four cells (c, n and their neighbours across the face) shears nothing, as MFIX's zero
@@ -189,16 +194,9 @@ void assemble_momentum_rows(const MomentumAssemblyInputs& in, Phase phase, int d
   };
   auto tangent_viscosity = [&](int local, int e) { return local >= 0 ? viscosity(local) * tangent_factor(local, e) : 0.0; };
   if (newton)
-    for (int e = 0; e < 3; ++e) {
-      if (e == d) continue;
-      auto& pair = scratch.tangent[static_cast<std::size_t>(e)];
-      pair.resize(static_cast<std::size_t>(layout.local_count()));
-      for (int l = 0; l < layout.local_count(); ++l) {
-        const int n = layout.neighbour(l, 2 * d + 1);
-        pair[static_cast<std::size_t>(l)] = n >= 0 ? mean(tangent_viscosity(l, e), tangent_viscosity(n, e))
-                                                   : tangent_viscosity(l, e);
-      }
-    }
+    for (int e = 0; e < 3; ++e)
+      if (e != d)
+        fill_pair_means(scratch.tangent[static_cast<std::size_t>(e)], [&](int c) { return tangent_viscosity(c, e); });
 
   rows.resize(numbering.owned_locals.size());
   for (std::size_t r = 0; r < numbering.owned_locals.size(); ++r) {

@@ -232,7 +232,7 @@ int run_command(const DeckArguments& args) {
                                                static_cast<double>(result.steps)
                                          : 0.0;
     // Before the summary, which stays the last line of a completed run (tools read it).
-    if (const auto& balance = result.force_balance; result.steps > 0 && balance.largest >= 0.0)
+    if (const auto& balance = result.force_balance; balance.largest >= 0.0)  // a step was taken
       say(fmt::format("bagnold run: momentum residual against the acting forces (monitor column "
                       "force_residual): largest {:.3g}{}, above numerics.tolerance in {} of {} "
                       "steps",

@@ -25,41 +25,42 @@ std::vector<std::string> split_csv(const std::string& line) {
   return fields;
 }
 
-// The earlier series at `path` up to `resume_time` (inclusive, to round-off), as rows under
-// `header`: each value under the column of its own name, "nan" under a column the earlier
-// series did not have. Sets `drops_columns` when the earlier series has a column `header` lacks.
-std::string earlier_rows(const std::string& path, const std::string& header, double resume_time,
-                         bool& drops_columns) {
+// The earlier series at `path` up to `resume_time` (inclusive, to round-off), as rows of the
+// columns `names` ("time" first): each value under the column of its own name, "nan" under one
+// the earlier series did not have; and whether the earlier series has a column `names` lacks.
+struct EarlierRows {
+  std::string rows;
+  bool drops_columns = false;
+};
+EarlierRows earlier_rows(const std::string& path, const std::vector<std::string>& names, double resume_time) {
+  EarlierRows earlier;
   std::ifstream in(path);
   std::string line;
-  if (!in || !std::getline(in, line)) return "";
-  const auto had = split_csv(line), wants = split_csv(header);
-  std::vector<int> source;  // per wanted column: its index in the earlier rows, or -1
-  for (const auto& name : wants) {
-    int found = -1;
-    for (std::size_t i = 0; i < had.size(); ++i)
-      if (had[i] == name) found = static_cast<int>(i);
-    source.push_back(found);
+  if (!in || !std::getline(in, line)) return earlier;
+  const auto had = split_csv(line);
+  const bool same = had == names;  // then each row is kept as it was written
+  std::vector<std::ptrdiff_t> source;  // per wanted column: its index in the earlier rows, or -1
+  for (const auto& name : names) {
+    const auto at = std::find(had.begin(), had.end(), name);
+    source.push_back(at == had.end() ? -1 : at - had.begin());
   }
   for (const auto& name : had)
-    if (std::find(wants.begin(), wants.end(), name) == wants.end()) drops_columns = true;
-  std::string kept;
+    if (std::find(names.begin(), names.end(), name) == names.end()) earlier.drops_columns = true;
   while (std::getline(in, line)) {
     if (line.empty()) continue;
     if (std::stod(line.substr(0, line.find(','))) > resume_time * (1 + 1e-12)) break;
-    if (had == wants) {  // the same columns: the row as it was written
-      kept += line + "\n";
+    if (same) {
+      earlier.rows += line + "\n";
       continue;
     }
     const auto values = split_csv(line);
     for (std::size_t c = 0; c < source.size(); ++c) {
-      if (c > 0) kept += ',';
-      const int i = source[c];
-      kept += i >= 0 && static_cast<std::size_t>(i) < values.size() ? values[static_cast<std::size_t>(i)] : "nan";
+      const auto i = static_cast<std::size_t>(source[c]);
+      earlier.rows += (c > 0 ? "," : "") + (source[c] >= 0 && i < values.size() ? values[i] : std::string("nan"));
     }
-    kept += "\n";
+    earlier.rows += "\n";
   }
-  return kept;
+  return earlier;
 }
 }  // namespace
 
@@ -67,14 +68,16 @@ Monitor::Monitor(std::string path, std::vector<std::string> columns, bool active
                  const double* resume_time)
     : m_path(std::move(path)), m_columns(std::move(columns)), m_active(active) {
   if (!m_active) return;
-  const std::string header = header_of(m_columns);
-  std::string kept = header + "\n";
+  std::string kept = header_of(m_columns) + "\n";
   if (resume_time) {
-    bool drops_columns = false;
-    kept += earlier_rows(m_path, header, *resume_time, drops_columns);
+    std::vector<std::string> names{"time"};
+    names.insert(names.end(), m_columns.begin(), m_columns.end());
+    const EarlierRows earlier = earlier_rows(m_path, names, *resume_time);
+    kept += earlier.rows;
     // A column the continued series no longer has: the earlier file is kept whole beside it.
-    if (drops_columns) std::filesystem::copy_file(m_path, m_path + ".before-restart",
-                                                  std::filesystem::copy_options::overwrite_existing);
+    if (earlier.drops_columns)
+      std::filesystem::copy_file(m_path, m_path + ".before-restart",
+                                 std::filesystem::copy_options::overwrite_existing);
   }
   write_file_atomically(m_path, kept);
   m_out.open(m_path, std::ios::app);

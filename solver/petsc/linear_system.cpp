@@ -95,10 +95,6 @@ void LinearSystem::set_row(std::int64_t row, const std::int64_t* columns, const 
   m_rhs_values[r] = rhs;
 }
 
-void LinearSystem::set_rhs(const std::vector<double>& rhs) {
-  std::copy(rhs.begin(), rhs.begin() + static_cast<std::ptrdiff_t>(m_rhs_values.size()), m_rhs_values.begin());
-}
-
 void LinearSystem::create_ksp() {
   petsc_check(KSPCreate(m_comm, m_ksp.out()), "KSPCreate");
   petsc_check(KSPSetOptionsPrefix(m_ksp.get(), m_prefix.c_str()), "KSPSetOptionsPrefix");

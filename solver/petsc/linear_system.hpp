@@ -55,9 +55,6 @@ class LinearSystem {
   // the pattern.
   void set_row(std::int64_t row, const std::int64_t* columns, const double* values, int count,
                double rhs);
-  // Replaces every owned row's right-hand side (row order), the matrix kept: the next solve()
-  // applies the inverse of the same matrix to `rhs` (solids_newton.cpp uses it as a preconditioner).
-  void set_rhs(const std::vector<double>& rhs);
   // Keep the preconditioner built for an earlier matrix (e.g. within one time step, where the
   // pressure matrix changes little between outer iterations) instead of rebuilding it.
   void keep_preconditioner();

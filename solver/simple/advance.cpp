@@ -62,9 +62,6 @@ bool FlowSolver::iterate(run::FlowState& state, const run::FlowState& old, doubl
     }
     if (m_predictor.coupled_solids()) {
       if (!m_predictor.solve_coupled_solids(state, result)) return false;
-      if (m_settings.solids_newton_krylov &&
-          !m_predictor.refine_solids_newton(m_closures, f.closures, inputs, state, result))
-        return false;
       for (int d = 0; d < 3; ++d) carry_fractions(disc, state, solids, d, f.carried);
     }
   }

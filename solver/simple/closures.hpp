@@ -52,12 +52,6 @@ class Closures {
   void evaluate(const Discretization& discretization, run::FlowState& state,
                 const run::FlowState& old, double dt, ClosureFields& fields);
 
-  // The solids stress alone (μ_s, λ_s, P_s, dP_s/dε_s and the fields they come with) at the
-  // iterate's solids velocities, the drag kept: what the Newton-Krylov solids momentum
-  // re-evaluates at each trial velocity (solids_newton.cpp).
-  void evaluate_solids_stress(const Discretization& discretization, run::FlowState& state,
-                              const run::FlowState& old, double dt, ClosureFields& fields);
-
   // The time at which the step being solved starts [s] (where the bulk viscosity ends).
   void set_step_start(double time) { m_step_start = time; }
 
@@ -69,6 +63,8 @@ class Closures {
  private:
   void evaluate_drag(const Discretization& discretization, const run::FlowState& state,
                      ClosureFields& fields);
+  void evaluate_solids_stress(const Discretization& discretization, run::FlowState& state,
+                              const run::FlowState& old, double dt, ClosureFields& fields);
 
   models::Material m_material;
   models::DragProperties m_drag_properties;

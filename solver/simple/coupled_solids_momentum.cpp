@@ -129,10 +129,4 @@ SolveReport CoupledSolidsMomentum::solve(std::array<std::vector<double>, 3>& vel
   return report;
 }
 
-SolveReport CoupledSolidsMomentum::apply_inverse(const std::vector<double>& rhs, std::vector<double>& z) {
-  m_system->set_rhs(rhs);
-  m_system->set_assembly_units(0.0);
-  return m_system->solve(z);
-}
-
 }  // namespace bagnold::solver

@@ -40,16 +40,6 @@ class CoupledSolidsMomentum {
   // halos).
   SolveReport solve(std::array<std::vector<double>, 3>& velocity);
 
-  // This rank's rows of all three components, and where component d's row r is among them.
-  std::size_t owned_rows() const { return m_x.size(); }
-  std::size_t position(int d, std::size_t r) const {
-    return static_cast<std::size_t>(m_offset[static_cast<std::size_t>(d)]) + r;
-  }
-  // The assembled matrix solved against `rhs` (owned rows, in position() order) into `z`, which
-  // holds the initial guess: the Picard matrix as the Newton-Krylov solve's preconditioner
-  // (solids_newton.hpp). The right-hand side set_row gave is overwritten.
-  SolveReport apply_inverse(const std::vector<double>& rhs, std::vector<double>& z);
-
  private:
   // The coupled global row of component e's unknown with global index g (of e's numbering).
   std::int64_t coupled(int e, std::int64_t g) const;

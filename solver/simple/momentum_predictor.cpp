@@ -43,13 +43,6 @@ double correction_diagonal(double relaxed, double neighbours, bool simplec) {
 }
 }  // namespace
 
-double face_drag_coefficient(const Discretization& disc, const std::vector<double>& cell_drag, int l, int d) {
-  const int n = disc.layout().neighbour(l, 2 * d + 1);
-  const double half_c = 0.5 * disc.width(l, d), half_n = 0.5 * disc.width(n, d);
-  return (cell_drag[static_cast<std::size_t>(l)] * half_n + cell_drag[static_cast<std::size_t>(n)] * half_c) /
-         (half_c + half_n);
-}
-
 MomentumPredictor::MomentumPredictor(const deck::Deck& deck, const Discretization& discretization,
                                      const SolverSettings& settings,
                                      const models::SolidsStressModel* closure)
@@ -154,7 +147,9 @@ bool MomentumPredictor::predict(int d, const Inputs& in, run::FlowState& state,
     if (g) sums.wall_shear[gas][ud] += g->wall_shear;
     if (s) sums.wall_shear[solids][ud] += s->wall_shear;
     assembly_units += (g ? 1.0 : 0.0) + (s ? 1.0 : 0.0);
-    const double beta_v = settings.drag ? face_drag_coefficient(disc, beta_cells, l, d) * any.volume : 0.0;
+    const double half_c = 0.5 * disc.width(l, d), half_n = 0.5 * disc.width(n, d);
+    const double beta = (beta_cells[ul] * half_n + beta_cells[static_cast<std::size_t>(n)] * half_c) / (half_c + half_n);
+    const double beta_v = settings.drag ? beta * any.volume : 0.0;
     const double A_g = g ? g->a + beta_v : 0.0, A_s = s ? s->a + beta_v : 0.0;
     const double R_g = g ? g->b + g->neighbours_u : 0.0, R_s = s ? s->b + s->neighbours_u : 0.0;
 

@@ -14,11 +14,6 @@
 
 namespace bagnold::solver {
 
-class Closures;
-
-// β at the d-face of local cell l: its two cells' β weighted by their distances [kg/(m³ s)].
-double face_drag_coefficient(const Discretization& disc, const std::vector<double>& cell_drag, int l, int d);
-
 class MomentumPredictor {
  public:
   // `deck` for the linear solvers' tolerance and the solids wall laws; `closure` the solids-stress
@@ -51,12 +46,6 @@ class MomentumPredictor {
   // into one system, which this solves (after predict() for d = 0, 1, 2) into `state`.
   bool coupled_solids() const { return m_coupled != nullptr; }
   bool solve_coupled_solids(run::FlowState& state, StepResult& record);
-  // numerics.solids_momentum = "newton-krylov": after solve_coupled_solids, Newton-Krylov steps
-  // on the solids momentum rows of all three components with the solids stress re-evaluated at
-  // each trial velocity, the gas, pressure and fractions held (solids_newton.cpp). `fields` is
-  // the object in.closures refers to; it ends at the returned velocities.
-  bool refine_solids_newton(Closures& closures, ClosureFields& fields, const Inputs& in,
-                            run::FlowState& state, StepResult& record);
 
  private:
   const Discretization& m_discretization;
@@ -68,7 +57,6 @@ class MomentumPredictor {
   std::array<std::vector<MomentumRow>, 2> m_rows;  // scratch, per phase
   std::array<std::vector<double>, 2> m_x;          // scratch, per phase
   MomentumAssemblyScratch m_assembly_scratch;      // scratch of the assembly
-  std::vector<MomentumRow> m_newton_rows;          // scratch of refine_solids_newton
   RowTrace m_row_trace;                            // BAGNOLD_TRACE_ROWS (row_trace.hpp)
 };
 

@@ -30,9 +30,7 @@ SolverSettings::SolverSettings(const deck::Deck& deck, const parallel::Domain& d
                                                  deck.numerics.viscosity_linearization,
                                                  "viscosity linearization")),
       coupled_solids_momentum(deck::choice_value(deck::solids_momentum_choices, deck.numerics.solids_momentum,
-                                                 "solids momentum") != deck::SolidsMomentum::segregated),
-      solids_newton_krylov(deck::choice_value(deck::solids_momentum_choices, deck.numerics.solids_momentum,
-                                              "solids momentum") == deck::SolidsMomentum::newton_krylov),
+                                                 "solids momentum") == deck::SolidsMomentum::coupled),
       vacant_fraction(deck.numerics.vacant_fraction) {
   double extent = 0.0, g2 = 0.0;
   for (int d = 0; d < 3; ++d) {

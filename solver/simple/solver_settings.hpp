@@ -44,8 +44,7 @@ struct SolverSettings {
   bool shear_on_opening_faces = true;  // numerics.shear_on_opening_faces
   bool copy_fluxes_into_openings = false;  // numerics.copy_fluxes_into_openings
   deck::ViscosityLinearization viscosity_linearization = deck::ViscosityLinearization::picard;
-  bool coupled_solids_momentum = false;  // numerics.solids_momentum = "coupled" or "newton-krylov"
-  bool solids_newton_krylov = false;     // numerics.solids_momentum = "newton-krylov"
+  bool coupled_solids_momentum = false;  // numerics.solids_momentum = "coupled"
   double vacant_fraction = 1e-8;  // numerics.vacant_fraction: Θ = 0 at or below this ε_s
 };
 

@@ -69,10 +69,9 @@ inline constexpr std::array<Choice<ViscosityLinearization>, 2> viscosity_lineari
 
 // numerics.solids_momentum: the solids momentum components solved one at a time or together
 // (solver/simple/coupled_solids_momentum.hpp).
-enum class SolidsMomentum { segregated, coupled, newton_krylov };
-inline constexpr std::array<Choice<SolidsMomentum>, 3> solids_momentum_choices{
-    {{"segregated", SolidsMomentum::segregated}, {"coupled", SolidsMomentum::coupled},
-     {"newton-krylov", SolidsMomentum::newton_krylov}}};
+enum class SolidsMomentum { segregated, coupled };
+inline constexpr std::array<Choice<SolidsMomentum>, 2> solids_momentum_choices{
+    {{"segregated", SolidsMomentum::segregated}, {"coupled", SolidsMomentum::coupled}}};
 
 // numerics.algorithm: the pressure-velocity coupling (solver/simple/momentum_predictor.cpp).
 enum class Coupling { simplec, simple };

@@ -423,10 +423,7 @@ const Section<Numerics>& numerics_section() {
                "segregated: one component after the other, the transpose's cross part "
                "∂_e(μ_s ∂_d u_e), e ≠ d, on the right-hand side at the current iterate (as MFIX). "
                "coupled: the three in one linear system with the cross part in the matrix, for "
-               "where a large μ_s (a stagnant zone's) couples the components strongly. "
-               "newton-krylov: after that solve, Jacobian-free Newton-Krylov steps on the three "
-               "components' rows with the solids stress re-evaluated at each trial velocity (the "
-               "gas, pressures and fractions held). The same "
+               "where a large μ_s (a stagnant zone's) couples the components strongly. The same "
                "equations either way: it changes how a step converges, not what it converges to "
                "(docs/solver.md)."),
       key(&Numerics::solids_bulk_viscosity_ratio, "solids_bulk_viscosity_ratio").unit("-").init()

@@ -42,7 +42,7 @@ TEST(Choices, ViscosityLinearizationsAreExactlyTheShippedOnes) {
 }
 
 TEST(Choices, SolidsMomentumSolvesAreExactlyTheShippedOnes) {
-  const std::vector<std::string> shipped = {"segregated", "coupled", "newton-krylov"};
+  const std::vector<std::string> shipped = {"segregated", "coupled"};
   EXPECT_EQ(deck::choice_names(deck::solids_momentum_choices), shipped);
   EXPECT_EQ(deck::choice_value(deck::solids_momentum_choices, "coupled", "solids momentum"),
             deck::SolidsMomentum::coupled);

@@ -13,9 +13,10 @@ double MomentumResidual::add(Sums& sums, const Row& row) const {
   every_force += row.force;
   const bool mfix = m_kind == ResidualNormalization::mfix;
   if (mfix && !row.mfix_counted) return 0.0;
-  const double row_residual = std::abs(row.source + (mfix ? row.mfix_coupling : 0.0) - row.operator_u);
+  const double judged = row.source + (mfix ? row.mfix_coupling : 0.0) - row.operator_u;
+  const double row_residual = std::abs(judged);
   residual += row_residual;
-  net += row.source + (mfix ? row.mfix_coupling : 0.0) - row.operator_u;
+  net += judged;
   total_weight += row.weight;
   switch (m_kind) {
     case ResidualNormalization::force:

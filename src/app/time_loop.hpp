@@ -19,10 +19,10 @@
 #include <string>
 
 #include "solver/simple/flow_solver.hpp"
+#include "src/app/force_balance_record.hpp"
 #include "src/io/monitor.hpp"
 #include "src/run/output_writer.hpp"
 #include "src/run/progress.hpp"
-#include "src/app/force_balance_record.hpp"
 #include "src/run/rank_balance.hpp"
 
 namespace bagnold::app {

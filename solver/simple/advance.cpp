@@ -9,7 +9,6 @@
 #include "solver/petsc/log_stage.hpp"
 #include "solver/petsc/work_clock.hpp"
 #include "solver/simple/face_fractions.hpp"
-#include "solver/simple/newton_krylov.hpp"
 #include "solver/simple/flow_solver.hpp"
 #include "solver/simple/solids_conservation.hpp"
 
@@ -175,90 +174,6 @@ StepResult FlowSolver::advance(run::FlowState& state, const run::FlowState& old,
     if (m_settings.detect_stall && stall_watch.has_stalled_after(iteration, largest)) {
       result.stalled = true;
       return result;
-    }
-    // TEMP experiment: BAGNOLD_NK_AFTER=n: from the n-th outer iteration on, every n-th, a
-    // Jacobian-free Newton-Krylov solve of x = G(x), G the outer iteration.
-    static const int nk_after = std::getenv("BAGNOLD_NK_AFTER") ? std::atoi(std::getenv("BAGNOLD_NK_AFTER")) : 0;
-    static const int nk_steps = std::getenv("BAGNOLD_NK_STEPS") ? std::atoi(std::getenv("BAGNOLD_NK_STEPS")) : 3;
-    static const int nk_dim = std::getenv("BAGNOLD_NK_DIM") ? std::atoi(std::getenv("BAGNOLD_NK_DIM")) : 20;
-    if (nk_after > 0 && m_anderson && iteration >= nk_after && iteration % nk_after == 0) {
-      AndersonMixing& a = *m_anderson;
-      a.set_velocity_scale(velocity_scale);
-      std::vector<double> u;
-      a.pack(state, u);
-      StepResult scratch;
-      std::vector<double> w;
-      NewtonKrylovProblem problem;
-      problem.residual = [&](const std::vector<double>& x, std::vector<double>& f) {
-        a.unpack(x, state);
-        IterationSums s;
-        if (!iterate(state, old, dt, false, velocity_scale, s, scratch)) return false;
-        a.pack(state, f);
-        bool finite = true;
-        for (std::size_t i = 0; i < f.size(); ++i) {
-          f[i] -= x[i];
-          finite = finite && std::isfinite(f[i]);
-        }
-        if (std::getenv("BAGNOLD_NK_DEBUG") && !w.empty()) {
-          const std::size_t n = a.owned();
-          std::array<double, 9> l1{};
-          for (std::size_t b = 0; b < 9; ++b)
-            for (std::size_t i = b * n; i < (b + 1) * n; ++i) l1[b] += w[i] * std::abs(f[i]);
-          for (double& v : l1) v = comm.sum(v);
-          if (comm.is_root()) {
-            std::fprintf(stderr, "    F L1 by block:");
-            for (const double v : l1) std::fprintf(stderr, " %.2e", v);
-            std::fprintf(stderr, "\n");
-          }
-        }
-        return comm.max(std::int64_t{finite ? 0 : 1}) == 0;
-      };
-      problem.precondition = [](const std::vector<double>& v, std::vector<double>& z) { z = v; return true; };
-      // BAGNOLD_NK_FORCE: each entry weighted by the force its change makes, against the sum
-      // the judged residual of its equation divides by (velocities: A/α / ΣF of the row's
-      // phase and component; ε_s: (K A_max + ρ_s V g) / the solids continuity's force sum; P:
-      // A_max / the mean ΣF of the gas components); else Anderson's weights.
-      static const bool force_weights = std::getenv("BAGNOLD_NK_FORCE") != nullptr;
-      if (force_weights) {
-        const std::size_t n = a.owned();
-        w.assign(9 * n, 0.0);
-        double gas_force = 0.0;
-        for (int c = 0; c < 3; ++c) gas_force += sums.momentum[static_cast<std::size_t>(c)].values[5] / 3.0;
-        const double rho_s = m_settings.density[solids], g = m_settings.gravity_magnitude;
-        for (int phase = 0; phase < 2; ++phase)
-          for (int c = 0; c < 3; ++c) {
-            const double total = std::max(sums.momentum[static_cast<std::size_t>(3 * phase + c)].values[5], 1e-300);
-            const auto& diag = m_predictor.relaxed_diagonal[static_cast<std::size_t>(phase)][static_cast<std::size_t>(c)];
-            for (std::size_t i = 0; i < n; ++i)
-              w[static_cast<std::size_t>(3 * phase + c) * n + i] = i < diag.size() ? diag[i] / total : 0.0;
-          }
-        const double solids_total = std::max(sums.continuity[1][1], 1e-300);
-        for (std::size_t i = 0; i < n; ++i) {
-          const int l = static_cast<int>(i);
-          const double area = std::max({m_discretization.face_area(l, 0), m_discretization.face_area(l, 1), m_discretization.face_area(l, 2)});
-          w[6 * n + i] = area / std::max(gas_force, 1e-300);
-          const double k = std::max(m_fields.closures.pressure_derivative[i], 0.0);
-          w[7 * n + i] = (k * area + rho_s * m_discretization.volume(l) * g) / solids_total;
-        }
-      }
-      problem.dot = [&](const std::vector<double>& x, const std::vector<double>& y) {
-        if (!force_weights) return comm.sum(a.dot(x, y));
-        double sum = 0.0;
-        for (std::size_t i = 0; i < x.size(); ++i) sum += w[i] * w[i] * x[i] * y[i];
-        return comm.sum(sum);
-      };
-      NewtonKrylovSettings nks;
-      nks.newton_steps = nk_steps;
-      nks.krylov_dimension = nk_dim;
-      nks.krylov_tolerance = 0.05;
-      const auto report = newton_krylov(problem, nks, u);
-      a.unpack(u, state);
-      if (comm.is_root())
-        std::fprintf(stderr, "  NK: ||x - G(x)|| %.3e -> %.3e in %d Newton steps, %d Krylov, %d evaluations%s\n",
-                     report.first, report.last, report.newton_steps, report.krylov_iterations,
-                     report.residual_evaluations, report.evaluated ? "" : " (evaluation failed)");
-      a.start_step(old);
-      continue;
     }
     // The next iteration starts from Anderson's mixture of the last results (anderson_mixing.hpp).
     if (m_anderson)

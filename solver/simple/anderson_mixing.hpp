@@ -37,14 +37,10 @@ class AndersonMixing {
   // cells whose ε_s was clipped.
   long mix(run::FlowState& state, double velocity_scale);
 
- // TEMP (experiment): public for the whole-step Newton-Krylov probe.
+ private:
   void pack(const run::FlowState& state, std::vector<double>& into) const;
   void unpack(const std::vector<double>& from, run::FlowState& state) const;
   double dot(const std::vector<double>& a, const std::vector<double>& b) const;  // local, weighted
-  void set_velocity_scale(double u) { m_velocity_weight = 1.0 / (u * u); }
-  std::size_t owned() const { return m_owned; }
-
- private:
 
   const parallel::Layout& m_layout;
   std::size_t m_depth;

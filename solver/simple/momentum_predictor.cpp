@@ -137,7 +137,6 @@ bool MomentumPredictor::predict(int d, const Inputs& in, run::FlowState& state,
   // counts the gas rows and the solids rows where there are solids (busy_segments.hpp).
   double assembly_units = 0.0;
   double explicit_stiffness_faces = 0.0;
-  for (auto& v : relaxed_diagonal) v[ud].assign(layout.local_count(), 0.0);
   for (std::size_t r = 0; r < numbering.owned_locals.size(); ++r) {
     const int l = numbering.owned_locals[r];
     const auto ul = static_cast<std::size_t>(l);
@@ -202,7 +201,6 @@ bool MomentumPredictor::predict(int d, const Inputs& in, run::FlowState& state,
         rhs += beta_v * u_s[ul];  // frozen solids, or none here (u_s = 0)
       }
       const double relaxed = diagonal / alpha;
-      relaxed_diagonal[gas][ud][ul] = relaxed;
       MomentumRow& row = rows[gas][r];  // the diagonal goes after the off-diagonal entries
       row.columns[row.count] = numbering.global[ul];
       row.values[row.count] = relaxed;
@@ -222,7 +220,6 @@ bool MomentumPredictor::predict(int d, const Inputs& in, run::FlowState& state,
           rhs += beta_v * R_g / A_g;
         }
         diagonal /= alpha;
-        relaxed_diagonal[solids][ud][ul] = diagonal;
         rhs += (1.0 - alpha) * diagonal * u_s[ul];
       }
       if (m_coupled) {

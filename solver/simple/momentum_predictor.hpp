@@ -47,9 +47,6 @@ class MomentumPredictor {
   bool coupled_solids() const { return m_coupled != nullptr; }
   bool solve_coupled_solids(run::FlowState& state, StepResult& record);
 
-  // TEMP (experiment): each row's relaxed diagonal A/α [kg/s] per [phase][d], owned rows.
-  std::array<std::array<std::vector<double>, 3>, 2> relaxed_diagonal;
-
  private:
   const Discretization& m_discretization;
   const SolverSettings& m_settings;

@@ -11,9 +11,16 @@
 namespace bagnold::io {
 
 namespace {
-std::string header_of(const std::vector<std::string>& columns) {
-  std::string h = "time";
-  for (const auto& c : columns) h += "," + c;
+// The file's columns: "time", then the monitor's.
+std::vector<std::string> file_columns(const std::vector<std::string>& columns) {
+  std::vector<std::string> names{"time"};
+  names.insert(names.end(), columns.begin(), columns.end());
+  return names;
+}
+
+std::string header_of(const std::vector<std::string>& names) {
+  std::string h;
+  for (const auto& name : names) h += (h.empty() ? "" : ",") + name;
   return h;
 }
 
@@ -68,10 +75,9 @@ Monitor::Monitor(std::string path, std::vector<std::string> columns, bool active
                  const double* resume_time)
     : m_path(std::move(path)), m_columns(std::move(columns)), m_active(active) {
   if (!m_active) return;
-  std::string kept = header_of(m_columns) + "\n";
+  const auto names = file_columns(m_columns);
+  std::string kept = header_of(names) + "\n";
   if (resume_time) {
-    std::vector<std::string> names{"time"};
-    names.insert(names.end(), m_columns.begin(), m_columns.end());
     const EarlierRows earlier = earlier_rows(m_path, names, *resume_time);
     kept += earlier.rows;
     // A column the continued series no longer has: the earlier file is kept whole beside it.

@@ -86,6 +86,13 @@ bool FlowSolver::iterate(run::FlowState& state, const run::FlowState& old, doubl
 StepResult FlowSolver::advance(run::FlowState& state, const run::FlowState& old, double dt,
                                bool (*stop_probe)()) {
   const ScopedWorkClock clock(ScopedWorkClock::step);  // this rank's balance (work_clock.hpp)
+  if (m_newton) {
+    StepResult result = m_newton->advance(state, old, dt, m_fields.worst, stop_probe);
+    if (result.converged && m_fraction)
+      m_stepped_solids_flux = conserve_solids(m_discretization, m_newton->carried(), m_settings.density[solids], old,
+                                              dt, state);
+    return result;
+  }
   StepResult result;
   apply_boundary_values(state);
   // BAGNOLD_TRACE=1: a line naming the step's dt and the columns, then every outer iteration's

@@ -23,6 +23,16 @@ FlowSolver::FlowSolver(const deck::Deck& deck, const parallel::Domain& domain)
     m_energy = std::make_unique<GranularEnergyEquation>(m_discretization, m_settings, m_closures);
   if (m_settings.anderson_depth > 0)
     m_anderson = std::make_unique<AndersonMixing>(domain.layout, m_settings.anderson_depth);
+  if (m_settings.step_solver == deck::StepSolver::newton) {
+    if (m_energy)
+      throw std::invalid_argument("numerics.step_solver = \"newton\" does not solve a transported granular energy; "
+                                  "use \"outer-iteration\" or an algebraic closure");
+    if (m_settings.moves[solids] && m_closures.stress())
+      m_newton_walls = std::make_unique<SolidsWallCoefficients>(deck, m_discretization, *m_closures.stress());
+    m_newton = std::make_unique<NewtonStep>(m_discretization, m_settings, m_closures, m_newton_walls.get(),
+                                            m_predictor.gas_source(),
+                                            [this](run::FlowState& s) { apply_boundary_values(s); });
+  }
 }
 
 double FlowSolver::residual_velocity_scale(const run::FlowState& state, double cap,

@@ -34,6 +34,7 @@
 #include <vector>
 
 #include "solver/discretization.hpp"
+#include "solver/newton/newton_step.hpp"
 #include "solver/simple/anderson_mixing.hpp"
 #include "solver/simple/closures.hpp"
 #include "solver/simple/granular_energy_equation.hpp"
@@ -123,6 +124,9 @@ class FlowSolver {
   IterationFields m_fields;
   std::vector<double> m_stepped_solids_flux;  // set by conserve_solids
   std::unique_ptr<AndersonMixing> m_anderson;  // null: Picard (numerics.anderson_depth = 0)
+  // numerics.step_solver = "newton" (newton_step.hpp): the walls' coefficients it holds, and it.
+  std::unique_ptr<SolidsWallCoefficients> m_newton_walls;
+  std::unique_ptr<NewtonStep> m_newton;
 };
 
 }  // namespace bagnold::solver

@@ -27,6 +27,8 @@ class MomentumPredictor {
     m_gas_source[static_cast<std::size_t>(d)] = std::move(source);
   }
 
+  const std::array<std::vector<double>, 3>& gas_source() const { return m_gas_source; }
+
   struct Inputs {
     const run::FlowState& old;  // the step's start
     double dt;                  // [s]

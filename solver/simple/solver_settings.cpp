@@ -31,6 +31,7 @@ SolverSettings::SolverSettings(const deck::Deck& deck, const parallel::Domain& d
                                                  "viscosity linearization")),
       coupled_solids_momentum(deck::choice_value(deck::solids_momentum_choices, deck.numerics.solids_momentum,
                                                  "solids momentum") == deck::SolidsMomentum::coupled),
+      step_solver(deck::choice_value(deck::step_solver_choices, deck.numerics.step_solver, "step solver")),
       vacant_fraction(deck.numerics.vacant_fraction) {
   double extent = 0.0, g2 = 0.0;
   for (int d = 0; d < 3; ++d) {

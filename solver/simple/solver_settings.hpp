@@ -45,6 +45,7 @@ struct SolverSettings {
   bool copy_fluxes_into_openings = false;  // numerics.copy_fluxes_into_openings
   deck::ViscosityLinearization viscosity_linearization = deck::ViscosityLinearization::picard;
   bool coupled_solids_momentum = false;  // numerics.solids_momentum = "coupled"
+  deck::StepSolver step_solver = deck::StepSolver::outer_iteration;  // numerics.step_solver
   double vacant_fraction = 1e-8;  // numerics.vacant_fraction: Θ = 0 at or below this ε_s
 };
 

@@ -73,6 +73,12 @@ enum class SolidsMomentum { segregated, coupled };
 inline constexpr std::array<Choice<SolidsMomentum>, 2> solids_momentum_choices{
     {{"segregated", SolidsMomentum::segregated}, {"coupled", SolidsMomentum::coupled}}};
 
+// numerics.step_solver: how a time step's equations are solved: the segregated outer iteration
+// (solver/simple/advance.cpp) or Newton on the whole step (solver/newton/newton_step.hpp).
+enum class StepSolver { outer_iteration, newton };
+inline constexpr std::array<Choice<StepSolver>, 2> step_solver_choices{
+    {{"outer-iteration", StepSolver::outer_iteration}, {"newton", StepSolver::newton}}};
+
 // numerics.algorithm: the pressure-velocity coupling (solver/simple/momentum_predictor.cpp).
 enum class Coupling { simplec, simple };
 inline constexpr std::array<Choice<Coupling>, 2> coupling_choices{

@@ -426,6 +426,18 @@ const Section<Numerics>& numerics_section() {
                "where a large μ_s (a stagnant zone's) couples the components strongly. The same "
                "equations either way: it changes how a step converges, not what it converges to "
                "(docs/solver.md)."),
+      key(&Numerics::step_solver, "step_solver").init()
+          .one_of(choice_names(step_solver_choices))
+          .doc("How a time step's discrete equations are solved. outer-iteration: MFIX's "
+               "segregated SIMPLE iteration (momentum predictors with partial elimination of drag, "
+               "pressure correction, solids fraction correction) repeated until the residuals are "
+               "below numerics.tolerance. newton: all of the step's unknowns (both phases' "
+               "velocities, the gas pressure, the solids fraction) in one nonlinear system, solved "
+               "by Newton iterations with a line search on PETSc's SNES, each a direct solve of "
+               "the coupled linearization (PETSc options with the prefix newton_); "
+               "numerics.max_outer_iterations bounds the Newton iterations. The same equations "
+               "and the same convergence test either way (docs/solver.md, \"Newton on the whole step\"). "
+               "Not with a transported granular energy."),
       key(&Numerics::solids_bulk_viscosity_ratio, "solids_bulk_viscosity_ratio").unit("-").init()
           .within(0.0, 100.0)
           .doc("r: a bulk viscosity r μ_s added to the closure's own λ_s (σ = −P_s I + 2 μ_s D + "

@@ -1,0 +1,182 @@
+// The Newton solve of a whole time step (newton_step.hpp).
+#include "solver/newton/newton_step.hpp"
+
+#include <cmath>
+
+namespace bagnold::solver {
+
+namespace {
+// SNES callbacks return PETSc error codes; a C++ exception must not cross PETSc's frames.
+template <class Body>
+PetscErrorCode guarded(Body&& body) {
+  try {
+    body();
+    return 0;
+  } catch (const std::exception& error) {
+    return PetscError(PETSC_COMM_SELF, __LINE__, "newton_step", __FILE__, PETSC_ERR_LIB, PETSC_ERROR_INITIAL,
+                      "%s", error.what());
+  }
+}
+}  // namespace
+
+NewtonStep::NewtonStep(const Discretization& discretization, const SolverSettings& settings, Closures& closures,
+                       SolidsWallCoefficients* walls, const std::array<std::vector<double>, 3>& gas_source,
+                       std::function<void(run::FlowState&)> boundary_values)
+    : m_discretization(discretization), m_settings(settings),
+      m_equations(discretization, settings, closures, walls, gas_source),
+      m_boundary_values(std::move(boundary_values)) {
+  const MPI_Comm comm = discretization.layout().comm().get();
+  const auto owned = static_cast<PetscInt>(m_equations.unknowns().owned_rows());
+  const auto total = static_cast<PetscInt>(m_equations.unknowns().total_rows());
+  petsc_check(VecCreateMPI(comm, owned, total, m_x.out()), "VecCreateMPI");
+  petsc_check(VecDuplicate(m_x.get(), m_f.out()), "VecDuplicate");
+  petsc_check(VecDuplicate(m_x.get(), m_evaluated_at.out()), "VecDuplicate");
+  m_equations.create_matrix(m_jacobian.out());
+  petsc_check(SNESCreate(comm, m_snes.out()), "SNESCreate");
+  SNES snes = m_snes.get();
+  petsc_check(SNESSetOptionsPrefix(snes, "newton_"), "SNESSetOptionsPrefix");
+  petsc_check(SNESSetType(snes, SNESNEWTONLS), "SNESSetType");
+  petsc_check(SNESSetFunction(snes, m_f.get(), form_function, this), "SNESSetFunction");
+  petsc_check(SNESSetJacobian(snes, m_jacobian.get(), m_jacobian.get(), form_jacobian, this), "SNESSetJacobian");
+  petsc_check(SNESSetConvergenceTest(snes, converged, this, nullptr), "SNESSetConvergenceTest");
+  petsc_check(SNESSetTolerances(snes, 0.0, 0.0, 0.0, settings.max_outer_iterations, 100 * settings.max_outer_iterations),
+              "SNESSetTolerances");
+  petsc_check(SNESSetMaxLinearSolveFailures(snes, 1), "SNESSetMaxLinearSolveFailures");
+  KSP ksp = nullptr;
+  petsc_check(SNESGetKSP(snes, &ksp), "SNESGetKSP");
+  petsc_check(KSPSetType(ksp, KSPPREONLY), "KSPSetType");
+  PC pc = nullptr;
+  petsc_check(KSPGetPC(ksp, &pc), "KSPGetPC");
+  petsc_check(PCSetType(pc, PCLU), "PCSetType");
+  petsc_check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "PCFactorSetMatSolverType");
+  SNESLineSearch search = nullptr;
+  petsc_check(SNESGetLineSearch(snes, &search), "SNESGetLineSearch");
+  petsc_check(SNESLineSearchSetType(search, SNESLINESEARCHBT), "SNESLineSearchSetType");
+  petsc_check(SNESSetFromOptions(snes), "SNESSetFromOptions");
+  petsc_check(SNESLineSearchSetPostCheck(search, post_check, this), "SNESLineSearchSetPostCheck");
+}
+
+NewtonStep::~NewtonStep() = default;
+
+void NewtonStep::evaluate(Vec x, Vec f) {
+  m_equations.unknowns().scatter(x, *m_state);
+  m_boundary_values(*m_state);
+  IterationSums sums;
+  m_equations.residual(*m_state, f, sums, *m_worst);
+  sums.stop = m_stop_probe && m_stop_probe() ? 1.0 : 0.0;
+  sums.reduce(m_discretization.layout().comm());
+  if (sums.stop > 0.0) m_result.abandoned = true;
+  StepResult& result = m_result;
+  result.force_balance = 0.0;
+  result.force_balance_equation = 0;
+  for (int e = 0; e < 6; ++e) {
+    const auto& momentum = sums.momentum[static_cast<std::size_t>(e)];
+    result.residuals.value[static_cast<std::size_t>(e)] = sums.normalization[static_cast<std::size_t>(e)].value(momentum);
+    if (const double balance = MomentumResidual::force_balance(momentum); balance > result.force_balance) {
+      result.force_balance = balance;
+      result.force_balance_equation = e;
+    }
+  }
+  for (int c = 0; c < 2; ++c) {
+    const auto& [imbalance, throughput] = sums.continuity[static_cast<std::size_t>(c)];
+    const bool solved = m_equations.unknowns().present(c == 0 ? StepUnknowns::pressure : StepUnknowns::fraction);
+    const bool in_forces = c == 1 && m_settings.residual_normalization == ResidualNormalization::force;
+    const double least = in_forces ? 1e-300 : m_discretization.reference_area() * m_settings.least_speed;
+    result.residuals.value[static_cast<std::size_t>(mixture_continuity + c)] =
+        !solved || imbalance <= 1e-300 ? 0.0 : imbalance / std::max(throughput, least);
+  }
+  result.wall_shear = sums.wall_shear;
+  result.judged = result.residuals.largest();
+  if (result.iterations == 0 && !m_have_evaluation) result.first_largest = result.judged;
+  petsc_check(VecCopy(x, m_evaluated_at.get()), "VecCopy");
+  m_have_evaluation = true;
+}
+
+PetscErrorCode NewtonStep::form_function(SNES snes, Vec x, Vec f, void* context) {
+  auto* self = static_cast<NewtonStep*>(context);
+  return guarded([&] {
+    self->evaluate(x, f);
+    if (!std::isfinite(self->m_result.judged)) petsc_check(SNESSetFunctionDomainError(snes), "SNESSetFunctionDomainError");
+  });
+}
+
+PetscErrorCode NewtonStep::form_jacobian(SNES, Vec x, Mat J, Mat P, void* context) {
+  auto* self = static_cast<NewtonStep*>(context);
+  return guarded([&] {
+    // The Jacobian comes from the rows of an evaluation at x: the line search's last one is.
+    PetscBool same = PETSC_FALSE;
+    if (self->m_have_evaluation) petsc_check(VecEqual(x, self->m_evaluated_at.get(), &same), "VecEqual");
+    if (!same) {
+      PetscVec scratch;
+      petsc_check(VecDuplicate(x, scratch.out()), "VecDuplicate");
+      self->evaluate(x, scratch.get());
+    }
+    self->m_equations.jacobian(*self->m_state, P);
+    if (J != P) {
+      petsc_check(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
+      petsc_check(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
+    }
+  });
+}
+
+PetscErrorCode NewtonStep::converged(SNES, PetscInt iteration, PetscReal, PetscReal, PetscReal,
+                                     SNESConvergedReason* reason, void* context) {
+  auto* self = static_cast<NewtonStep*>(context);
+  self->m_result.iterations = static_cast<int>(iteration);
+  *reason = SNES_CONVERGED_ITERATING;
+  const double judged = self->m_result.judged;
+  // PETSc 3.18 has no reason of a user's own: the judged residual is recorded as converged.
+  if (self->m_result.abandoned) *reason = SNES_DIVERGED_MAX_IT;
+  else if (!std::isfinite(judged)) *reason = SNES_DIVERGED_FNORM_NAN;
+  else if (judged < self->m_settings.tolerance) *reason = SNES_CONVERGED_FNORM_ABS, self->m_result.converged = true;
+  else if (iteration >= self->m_settings.max_outer_iterations) *reason = SNES_DIVERGED_MAX_IT;
+  return 0;
+}
+
+PetscErrorCode NewtonStep::post_check(SNESLineSearch, Vec, Vec, Vec w, PetscBool*, PetscBool* changed_w,
+                                      void* context) {
+  auto* self = static_cast<NewtonStep*>(context);
+  return guarded([&] {
+    const StepUnknowns& unknowns = self->m_equations.unknowns();
+    *changed_w = PETSC_FALSE;
+    if (!unknowns.present(StepUnknowns::fraction)) return;
+    PetscScalar* values = nullptr;
+    petsc_check(VecGetArray(w, &values), "VecGetArray");
+    const auto offset = unknowns.block_offset(StepUnknowns::fraction);
+    const auto rows = static_cast<std::int64_t>(unknowns.owned_locals(StepUnknowns::fraction).size());
+    double clamped = 0.0;
+    for (std::int64_t r = offset; r < offset + rows; ++r)
+      if (values[r] < 0.0) values[r] = 0.0, clamped += 1.0;
+    petsc_check(VecRestoreArray(w, &values), "VecRestoreArray");
+    self->m_result.interventions[fraction_clamped_at_zero] += clamped;
+    if (clamped > 0.0) *changed_w = PETSC_TRUE;
+  });
+}
+
+StepResult NewtonStep::advance(run::FlowState& state, const run::FlowState& old, double dt, WorstCells& worst,
+                               bool (*stop_probe)()) {
+  m_state = &state;
+  m_worst = &worst;
+  m_stop_probe = stop_probe;
+  m_result = StepResult{};
+  m_have_evaluation = false;
+  m_boundary_values(state);
+  m_equations.start_step(old, dt);
+  m_equations.unknowns().gather(state, m_x.get());
+  petsc_check(SNESSolve(m_snes.get(), nullptr, m_x.get()), "SNESSolve");
+  SNESConvergedReason reason = SNES_CONVERGED_ITERATING;
+  petsc_check(SNESGetConvergedReason(m_snes.get(), &reason), "SNESGetConvergedReason");
+  PetscInt linear = 0;
+  petsc_check(SNESGetLinearSolveIterations(m_snes.get(), &linear), "SNESGetLinearSolveIterations");
+  m_result.linear_iterations[momentum_systems] = static_cast<double>(linear);
+  // The state of the last evaluation is the solution SNES returns (its line search evaluates there last).
+  PetscBool same = PETSC_FALSE;
+  petsc_check(VecEqual(m_x.get(), m_evaluated_at.get(), &same), "VecEqual");
+  if (!same) evaluate(m_x.get(), m_f.get());
+  m_result.converged = m_result.converged && reason == SNES_CONVERGED_FNORM_ABS;
+  if (!m_result.converged && !m_result.abandoned && reason != SNES_DIVERGED_MAX_IT)
+    m_result.failure = std::string("the Newton solve of the step stopped (") + SNESConvergedReasons[reason] + ")";
+  return m_result;
+}
+
+}  // namespace bagnold::solver

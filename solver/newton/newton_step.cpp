@@ -2,10 +2,17 @@
 #include "solver/newton/newton_step.hpp"
 
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 
 namespace bagnold::solver {
 
 namespace {
+// Each Newton iteration's linear solve: until the residual of the exact (matrix-free) Jacobian
+// has fallen by this, within this many Krylov iterations (each one evaluation of F).
+constexpr double linear_relative_tolerance = 1e-3;
+constexpr int max_linear_iterations = 100;
+
 // SNES callbacks return PETSc error codes; a C++ exception must not cross PETSc's frames.
 template <class Body>
 PetscErrorCode guarded(Body&& body) {
@@ -21,10 +28,11 @@ PetscErrorCode guarded(Body&& body) {
 
 NewtonStep::NewtonStep(const Discretization& discretization, const SolverSettings& settings, Closures& closures,
                        SolidsWallCoefficients* walls, const std::array<std::vector<double>, 3>& gas_source,
-                       std::function<void(run::FlowState&)> boundary_values)
+                       std::function<void(run::FlowState&)> boundary_values,
+                       std::function<CellLocation(int)> worst_cell)
     : m_discretization(discretization), m_settings(settings),
       m_equations(discretization, settings, closures, walls, gas_source),
-      m_boundary_values(std::move(boundary_values)) {
+      m_boundary_values(std::move(boundary_values)), m_worst_cell(std::move(worst_cell)) {
   const MPI_Comm comm = discretization.layout().comm().get();
   const auto owned = static_cast<PetscInt>(m_equations.unknowns().owned_rows());
   const auto total = static_cast<PetscInt>(m_equations.unknowns().total_rows());
@@ -42,9 +50,14 @@ NewtonStep::NewtonStep(const Discretization& discretization, const SolverSetting
   petsc_check(SNESSetTolerances(snes, 0.0, 0.0, 0.0, settings.max_outer_iterations, 100 * settings.max_outer_iterations),
               "SNESSetTolerances");
   petsc_check(SNESSetMaxLinearSolveFailures(snes, 1), "SNESSetMaxLinearSolveFailures");
+  // The exact Jacobian, matrix-free (differences of F), by flexible GMRES preconditioned by an
+  // LU factorization of the assembled linearization (step_equations.hpp).
+  petsc_check(SNESSetUseMatrixFree(snes, PETSC_TRUE, PETSC_FALSE), "SNESSetUseMatrixFree");
   KSP ksp = nullptr;
   petsc_check(SNESGetKSP(snes, &ksp), "SNESGetKSP");
-  petsc_check(KSPSetType(ksp, KSPPREONLY), "KSPSetType");
+  petsc_check(KSPSetType(ksp, KSPFGMRES), "KSPSetType");
+  petsc_check(KSPSetTolerances(ksp, linear_relative_tolerance, 0.0, PETSC_DEFAULT, max_linear_iterations),
+              "KSPSetTolerances");
   PC pc = nullptr;
   petsc_check(KSPGetPC(ksp, &pc), "KSPGetPC");
   petsc_check(PCSetType(pc, PCLU), "PCSetType");
@@ -54,6 +67,11 @@ NewtonStep::NewtonStep(const Discretization& discretization, const SolverSetting
   petsc_check(SNESLineSearchSetType(search, SNESLINESEARCHBT), "SNESLineSearchSetType");
   petsc_check(SNESSetFromOptions(snes), "SNESSetFromOptions");
   petsc_check(SNESLineSearchSetPostCheck(search, post_check, this), "SNESLineSearchSetPostCheck");
+  if (m_equations.unknowns().present(StepUnknowns::fraction)) {
+    m_compression = std::make_unique<CompressionLimit>(discretization, settings, closures);
+    m_fraction_change.assign(static_cast<std::size_t>(discretization.layout().local_count()), 0.0);
+    petsc_check(SNESLineSearchSetPreCheck(search, pre_check, this), "SNESLineSearchSetPreCheck");
+  }
 }
 
 NewtonStep::~NewtonStep() = default;
@@ -123,6 +141,16 @@ PetscErrorCode NewtonStep::converged(SNES, PetscInt iteration, PetscReal, PetscR
                                      SNESConvergedReason* reason, void* context) {
   auto* self = static_cast<NewtonStep*>(context);
   self->m_result.iterations = static_cast<int>(iteration);
+  // BAGNOLD_TRACE=1: every Newton iteration's residuals, as the outer iteration's (advance.cpp).
+  if (std::getenv("BAGNOLD_TRACE")) {
+    const int worst = self->m_result.residuals.worst();
+    const CellLocation where = self->m_worst_cell(worst);  // collective
+    if (self->m_discretization.layout().comm().is_root()) {
+      std::fprintf(stderr, "  newton %d:", static_cast<int>(iteration));
+      for (const double r : self->m_result.residuals.value) std::fprintf(stderr, " %.3e", r);
+      std::fprintf(stderr, "  worst %s in %s\n", equation_name(worst), where.text().c_str());
+    }
+  }
   *reason = SNES_CONVERGED_ITERATING;
   const double judged = self->m_result.judged;
   // PETSc 3.18 has no reason of a user's own: the judged residual is recorded as converged.
@@ -131,6 +159,37 @@ PetscErrorCode NewtonStep::converged(SNES, PetscInt iteration, PetscReal, PetscR
   else if (judged < self->m_settings.tolerance) *reason = SNES_CONVERGED_FNORM_ABS, self->m_result.converged = true;
   else if (iteration >= self->m_settings.max_outer_iterations) *reason = SNES_DIVERGED_MAX_IT;
   return 0;
+}
+
+PetscErrorCode NewtonStep::pre_check(SNESLineSearch, Vec x, Vec y, PetscBool* changed, void* context) {
+  auto* self = static_cast<NewtonStep*>(context);
+  return guarded([&] {
+    // The closures at x again (the matrix-free products evaluated F beside it since).
+    PetscVec scratch;
+    petsc_check(VecDuplicate(x, scratch.out()), "VecDuplicate");
+    self->evaluate(x, scratch.get());
+    const StepUnknowns& unknowns = self->m_equations.unknowns();
+    const auto& locals = unknowns.owned_locals(StepUnknowns::fraction);
+    const auto offset = unknowns.block_offset(StepUnknowns::fraction);
+    PetscScalar* values = nullptr;
+    petsc_check(VecGetArray(y, &values), "VecGetArray");
+    auto& change = self->m_fraction_change;
+    // SNES steps to x − λ y.
+    for (std::size_t r = 0; r < locals.size(); ++r)
+      change[static_cast<std::size_t>(locals[r])] = -values[offset + static_cast<std::int64_t>(r)];
+    IterationSums sums;
+    self->m_compression->apply(*self->m_state, self->m_equations.fields(), change, sums);
+    bool limited = false;
+    for (std::size_t r = 0; r < locals.size(); ++r) {
+      auto& value = values[offset + static_cast<std::int64_t>(r)];
+      const double limited_value = -change[static_cast<std::size_t>(locals[r])];
+      if (limited_value != value) limited = true, value = limited_value;
+    }
+    petsc_check(VecRestoreArray(y, &values), "VecRestoreArray");
+    for (const auto i : {compression_damped, fraction_clamped_at_zero})
+      self->m_result.interventions[i] += self->m_discretization.layout().comm().sum(sums.interventions[i]);
+    *changed = self->m_discretization.layout().comm().max(limited ? 1.0 : 0.0) > 0.0 ? PETSC_TRUE : PETSC_FALSE;
+  });
 }
 
 PetscErrorCode NewtonStep::post_check(SNESLineSearch, Vec, Vec, Vec w, PetscBool*, PetscBool* changed_w,

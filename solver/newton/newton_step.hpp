@@ -2,15 +2,22 @@
 // numerics.step_solver = "newton": one implicit-Euler time step solved as one nonlinear system
 // F(x) = 0 over all its unknowns at once (both phases' velocities, the gas pressure, the solids
 // fraction; step_equations.hpp) with PETSc's SNES: Newton iterations with a backtracking line
-// search on ‖F‖, each a linear solve of the Jacobian of step_equations.hpp (by default an LU
-// factorization, MUMPS; every SNES, KSP and PC option can be given with the prefix newton_, e.g.
-// -newton_snes_mf_operator for the exact, matrix-free Jacobian preconditioned by the assembled
-// one, or -newton_snes_monitor). The step has converged when the residuals, judged as the outer
+// search on ‖F‖. Each Newton iteration solves with the exact Jacobian, applied matrix-free as a
+// difference of F along the Krylov vector, by flexible GMRES to a relative 10⁻³, preconditioned
+// by an LU factorization (MUMPS) of the assembled linearization of step_equations.hpp. Every
+// SNES, KSP and PC option can be given with the prefix newton_ (e.g. -newton_snes_monitor;
+// -newton_snes_mf_operator 0 takes the assembled linearization as the Jacobian itself). The step has converged when the residuals, judged as the outer
 // iteration judges them (numerics.residual_normalization, numerics.tolerance), are below the
 // tolerance; it fails (and is redone with a smaller dt) after numerics.max_outer_iterations Newton
-// iterations, or when the line search finds no decrease. After each Newton update ε_s is kept
-// ≥ 0 (counted as fraction_clamped_at_zero); a trial state on which a closure is not finite is
-// a domain error, which shortens the line search's step.
+// iterations, or when the line search finds no decrease. Before the line search, each cell's
+// share of the Newton update of ε_s is limited as the outer iteration limits its fraction
+// correction (compression_limit.hpp): never below ε_s = 0, and where it compresses, not into
+// a P_s above twice its linear prediction (near packing P_s is convex, and a full Newton step
+// from below lands at pressures orders of magnitude too high, which the line search would
+// otherwise answer by shortening the step everywhere). The limit shapes the path only: a
+// converged step satisfies the same equations. After each line search step ε_s is kept ≥ 0
+// (counted as fraction_clamped_at_zero); a trial state on which a closure is not finite is a
+// domain error, which shortens the line search's step.
 
 #include <petscsnes.h>
 
@@ -19,15 +26,17 @@
 
 #include "solver/newton/step_equations.hpp"
 #include "solver/petsc/handle.hpp"
+#include "solver/simple/compression_limit.hpp"
 
 namespace bagnold::solver {
 
 class NewtonStep {
  public:
-  // `boundary_values` sets what every stencil reads at the boundaries (FlowSolver's).
+  // `boundary_values` sets what every stencil reads at the boundaries; `worst_cell` locates the
+  // largest row of an equation (collective), for BAGNOLD_TRACE (FlowSolver's, both).
   NewtonStep(const Discretization& discretization, const SolverSettings& settings, Closures& closures,
              SolidsWallCoefficients* walls, const std::array<std::vector<double>, 3>& gas_source,
-             std::function<void(run::FlowState&)> boundary_values);
+             std::function<void(run::FlowState&)> boundary_values, std::function<CellLocation(int)> worst_cell);
   ~NewtonStep();
   NewtonStep(const NewtonStep&) = delete;
   NewtonStep& operator=(const NewtonStep&) = delete;
@@ -45,6 +54,7 @@ class NewtonStep {
   static PetscErrorCode form_jacobian(SNES snes, Vec x, Mat J, Mat P, void* context);
   static PetscErrorCode converged(SNES snes, PetscInt iteration, PetscReal xnorm, PetscReal step_norm,
                                   PetscReal fnorm, SNESConvergedReason* reason, void* context);
+  static PetscErrorCode pre_check(SNESLineSearch search, Vec x, Vec y, PetscBool* changed, void* context);
   static PetscErrorCode post_check(SNESLineSearch search, Vec x, Vec y, Vec w, PetscBool* changed_y,
                                    PetscBool* changed_w, void* context);
   // F at x into f, the judged residuals into m_result.
@@ -53,7 +63,10 @@ class NewtonStep {
   const Discretization& m_discretization;
   const SolverSettings& m_settings;
   StepEquations m_equations;
+  std::unique_ptr<CompressionLimit> m_compression;  // null unless the solids move
+  std::vector<double> m_fraction_change;            // per local cell, the Newton update's ε_s change
   std::function<void(run::FlowState&)> m_boundary_values;
+  std::function<CellLocation(int)> m_worst_cell;
   PetscHandle<SNES, SNESDestroy> m_snes;
   PetscMat m_jacobian;
   PetscVec m_x, m_f, m_evaluated_at;

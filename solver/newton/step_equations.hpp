@@ -57,6 +57,7 @@ class StepEquations {
   void jacobian(const run::FlowState& state, Mat J);
   // The closures and rows of the last residual(): what conserve_solids needs after convergence.
   const CarriedFractions& carried() const { return m_carried; }
+  const ClosureFields& fields() const { return m_fields; }
   // Creates J with its rows' preallocation (collective).
   void create_matrix(Mat* J) const;
 

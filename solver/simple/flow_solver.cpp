@@ -31,7 +31,8 @@ FlowSolver::FlowSolver(const deck::Deck& deck, const parallel::Domain& domain)
       m_newton_walls = std::make_unique<SolidsWallCoefficients>(deck, m_discretization, *m_closures.stress());
     m_newton = std::make_unique<NewtonStep>(m_discretization, m_settings, m_closures, m_newton_walls.get(),
                                             m_predictor.gas_source(),
-                                            [this](run::FlowState& s) { apply_boundary_values(s); });
+                                            [this](run::FlowState& s) { apply_boundary_values(s); },
+                                            [this](int equation) { return worst_cell(equation); });
   }
 }
 

@@ -1,12 +1,13 @@
 # Finds every dependency and, when one is missing, stops with the Debian package that provides it.
-# tools/setup installs all of them on a fresh machine.
+# tools/setup installs what the program needs, tools/setup --tests also what the tests need.
 
 function(bagnold_require found what package)
   if(NOT ${found})
     message(FATAL_ERROR
       "Bagnold needs ${what}, which was not found.\n"
       "On Debian install it with:  sudo apt-get install ${package}\n"
-      "(or run tools/setup, which installs every dependency and builds).")
+      "(or run tools/setup, which installs what the program needs and builds it; with --tests also\n"
+      "what the tests need).")
   endif()
 endfunction()
 
@@ -42,8 +43,8 @@ bagnold_require(CLI11_FOUND "CLI11" "libcli11-dev")
 find_package(fmt QUIET)
 bagnold_require(fmt_FOUND "fmt" "libfmt-dev")
 
+# GoogleTest only for the tests (BAGNOLD_TESTS, in CMakeLists.txt): the program does not need it.
 find_package(GTest QUIET)
-bagnold_require(GTest_FOUND "GoogleTest" "libgtest-dev")
 
 find_program(MPIEXEC_EXECUTABLE NAMES mpirun mpiexec)
 bagnold_require(MPIEXEC_EXECUTABLE "mpirun" "openmpi-bin")

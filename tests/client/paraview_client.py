@@ -55,7 +55,7 @@ def main():
     pvpython, xvfb = shutil.which("pvpython"), shutil.which("xvfb-run")
     if not pvpython or not xvfb:
         missing = " and ".join(n for n, p in (("pvpython", pvpython), ("xvfb-run", xvfb)) if not p)
-        print(f"SKIP: {missing} not found; install Debian's python3-paraview and xvfb (tools/setup)")
+        print(f"SKIP: {missing} not found; install Debian's python3-paraview and xvfb (tools/setup --tests)")
         return SKIP
     shutil.rmtree(run_dir, ignore_errors=True)
     subprocess.run([bagnold, "run", deck, "--set", "run.end_time=0.02",

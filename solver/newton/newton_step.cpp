@@ -40,19 +40,29 @@ NewtonStep::NewtonStep(const Discretization& discretization, const SolverSetting
   petsc_check(VecDuplicate(m_x.get(), m_f.out()), "VecDuplicate");
   petsc_check(VecDuplicate(m_x.get(), m_evaluated_at.out()), "VecDuplicate");
   m_equations.create_matrix(m_jacobian.out());
+  m_equations.create_matrix(m_correction.out());
+  // A velocity in units of the reference speed, the gas pressure in units of the weight of a
+  // packed column of the domain's height (ρ_s |g| L, or ρ_g U² without gravity).
+  const double pressure_scale = std::max(settings.density[solids] * settings.gravity_magnitude * settings.extent,
+                                         settings.density[gas] * settings.reference_speed * settings.reference_speed);
+  m_equations.unknowns().set_scales(settings.reference_speed, pressure_scale > 0.0 ? pressure_scale : 1.0);
+  petsc_check(VecDuplicate(m_x.get(), m_column_scales.out()), "VecDuplicate");
+  m_equations.unknowns().fill_scales(m_column_scales.get());
   petsc_check(SNESCreate(comm, m_snes.out()), "SNESCreate");
   SNES snes = m_snes.get();
   petsc_check(SNESSetOptionsPrefix(snes, "newton_"), "SNESSetOptionsPrefix");
   petsc_check(SNESSetType(snes, SNESNEWTONLS), "SNESSetType");
   petsc_check(SNESSetFunction(snes, m_f.get(), form_function, this), "SNESSetFunction");
-  petsc_check(SNESSetJacobian(snes, m_jacobian.get(), m_jacobian.get(), form_jacobian, this), "SNESSetJacobian");
+  petsc_check(MatCreateSNESMF(snes, m_matrix_free.out()), "MatCreateSNESMF");
+  petsc_check(MatCreateShell(comm, owned, owned, total, total, this, m_operator.out()), "MatCreateShell");
+  petsc_check(MatShellSetOperation(m_operator.get(), MATOP_MULT, reinterpret_cast<void (*)(void)>(apply_operator)),
+              "MatShellSetOperation");
+  petsc_check(SNESSetJacobian(snes, m_operator.get(), m_jacobian.get(), form_jacobian, this), "SNESSetJacobian");
   petsc_check(SNESSetConvergenceTest(snes, converged, this, nullptr), "SNESSetConvergenceTest");
   petsc_check(SNESSetTolerances(snes, 0.0, 0.0, 0.0, settings.max_outer_iterations, 100 * settings.max_outer_iterations),
               "SNESSetTolerances");
   petsc_check(SNESSetMaxLinearSolveFailures(snes, 1), "SNESSetMaxLinearSolveFailures");
-  // The exact Jacobian, matrix-free (differences of F), by flexible GMRES preconditioned by an
-  // LU factorization of the assembled linearization (step_equations.hpp).
-  petsc_check(SNESSetUseMatrixFree(snes, PETSC_TRUE, PETSC_FALSE), "SNESSetUseMatrixFree");
+  // Flexible GMRES preconditioned by an LU factorization of the assembled linearization.
   KSP ksp = nullptr;
   petsc_check(SNESGetKSP(snes, &ksp), "SNESGetKSP");
   petsc_check(KSPSetType(ksp, KSPFGMRES), "KSPSetType");
@@ -67,7 +77,7 @@ NewtonStep::NewtonStep(const Discretization& discretization, const SolverSetting
   petsc_check(SNESLineSearchSetType(search, SNESLINESEARCHBT), "SNESLineSearchSetType");
   petsc_check(SNESSetFromOptions(snes), "SNESSetFromOptions");
   petsc_check(SNESLineSearchSetPostCheck(search, post_check, this), "SNESLineSearchSetPostCheck");
-  if (m_equations.unknowns().present(StepUnknowns::fraction)) {
+  if (m_equations.unknowns().present(StepUnknowns::fraction) && !std::getenv("BAGNOLD_NO_PRECHECK")) {
     m_compression = std::make_unique<CompressionLimit>(discretization, settings, closures);
     m_fraction_change.assign(static_cast<std::size_t>(discretization.layout().local_count()), 0.0);
     petsc_check(SNESLineSearchSetPreCheck(search, pre_check, this), "SNESLineSearchSetPreCheck");
@@ -129,12 +139,25 @@ PetscErrorCode NewtonStep::form_jacobian(SNES, Vec x, Mat J, Mat P, void* contex
       petsc_check(VecDuplicate(x, scratch.out()), "VecDuplicate");
       self->evaluate(x, scratch.get());
     }
-    self->m_equations.jacobian(*self->m_state, P);
-    if (J != P) {
-      petsc_check(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
-      petsc_check(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
-    }
+    self->m_equations.jacobian(*self->m_state, P, self->m_correction.get(), self->m_settings.stress_velocity);
+    // Columns in the vector's units (step_unknowns.hpp).
+    petsc_check(MatDiagonalScale(P, nullptr, self->m_column_scales.get()), "MatDiagonalScale");
+    petsc_check(MatDiagonalScale(self->m_correction.get(), nullptr, self->m_column_scales.get()), "MatDiagonalScale");
+    // The differences of F start from x (MatCreateSNESMF takes SNES's current solution).
+    petsc_check(MatAssemblyBegin(self->m_matrix_free.get(), MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
+    petsc_check(MatAssemblyEnd(self->m_matrix_free.get(), MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
+    petsc_check(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
+    petsc_check(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
   });
+}
+
+PetscErrorCode NewtonStep::apply_operator(Mat A, Vec x, Vec y) {
+  void* context = nullptr;
+  PetscCall(MatShellGetContext(A, &context));
+  auto* self = static_cast<NewtonStep*>(context);
+  PetscCall(MatMult(self->m_matrix_free.get(), x, y));
+  if (self->m_settings.stress_velocity) PetscCall(MatMultAdd(self->m_correction.get(), x, y, y));
+  return 0;
 }
 
 PetscErrorCode NewtonStep::converged(SNES, PetscInt iteration, PetscReal, PetscReal, PetscReal,
@@ -149,6 +172,7 @@ PetscErrorCode NewtonStep::converged(SNES, PetscInt iteration, PetscReal, PetscR
       std::fprintf(stderr, "  newton %d:", static_cast<int>(iteration));
       for (const double r : self->m_result.residuals.value) std::fprintf(stderr, " %.3e", r);
       std::fprintf(stderr, "  worst %s in %s\n", equation_name(worst), where.text().c_str());
+      if (std::getenv("BAGNOLD_DEBUG")) std::fprintf(stderr, "    %s\n", self->m_equations.describe_row(*self->m_state, worst, self->m_worst->local(worst)).c_str());
     }
   }
   *reason = SNES_CONVERGED_ITERATING;
@@ -205,7 +229,7 @@ PetscErrorCode NewtonStep::post_check(SNESLineSearch, Vec, Vec, Vec w, PetscBool
     const auto rows = static_cast<std::int64_t>(unknowns.owned_locals(StepUnknowns::fraction).size());
     double clamped = 0.0;
     for (std::int64_t r = offset; r < offset + rows; ++r)
-      if (values[r] < 0.0) values[r] = 0.0, clamped += 1.0;
+      if (const double empty = unknowns.entry(r, 0.0); values[r] < empty) values[r] = empty, clamped += 1.0;
     petsc_check(VecRestoreArray(w, &values), "VecRestoreArray");
     self->m_result.interventions[fraction_clamped_at_zero] += clamped;
     if (clamped > 0.0) *changed_w = PETSC_TRUE;
@@ -221,6 +245,7 @@ StepResult NewtonStep::advance(run::FlowState& state, const run::FlowState& old,
   m_have_evaluation = false;
   m_boundary_values(state);
   m_equations.start_step(old, dt);
+  m_equations.unknowns().set_origin(state);
   m_equations.unknowns().gather(state, m_x.get());
   petsc_check(SNESSolve(m_snes.get(), nullptr, m_x.get()), "SNESSolve");
   SNESConvergedReason reason = SNES_CONVERGED_ITERATING;

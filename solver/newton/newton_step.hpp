@@ -2,11 +2,12 @@
 // numerics.step_solver = "newton": one implicit-Euler time step solved as one nonlinear system
 // F(x) = 0 over all its unknowns at once (both phases' velocities, the gas pressure, the solids
 // fraction; step_equations.hpp) with PETSc's SNES: Newton iterations with a backtracking line
-// search on ‖F‖. Each Newton iteration solves with the exact Jacobian, applied matrix-free as a
-// difference of F along the Krylov vector, by flexible GMRES to a relative 10⁻³, preconditioned
-// by an LU factorization (MUMPS) of the assembled linearization of step_equations.hpp. Every
-// SNES, KSP and PC option can be given with the prefix newton_ (e.g. -newton_snes_monitor;
-// -newton_snes_mf_operator 0 takes the assembled linearization as the Jacobian itself). The step has converged when the residuals, judged as the outer
+// search on ‖F‖. Each Newton iteration solves with the Jacobian — the exact one, applied
+// matrix-free as a difference of F along the Krylov vector, plus under
+// numerics.newton_linearization = "stress-velocity" the stress–velocity correction of the solids'
+// rate-independent stress (step_equations.hpp) — by flexible GMRES to a relative 10⁻³,
+// preconditioned by an LU factorization (MUMPS) of the assembled linearization. Every SNES, KSP
+// and PC option can be given with the prefix newton_ (e.g. -newton_snes_monitor). The step has converged when the residuals, judged as the outer
 // iteration judges them (numerics.residual_normalization, numerics.tolerance), are below the
 // tolerance; it fails (and is redone with a smaller dt) after numerics.max_outer_iterations Newton
 // iterations, or when the line search finds no decrease. Before the line search, each cell's
@@ -68,8 +69,12 @@ class NewtonStep {
   std::function<void(run::FlowState&)> m_boundary_values;
   std::function<CellLocation(int)> m_worst_cell;
   PetscHandle<SNES, SNESDestroy> m_snes;
-  PetscMat m_jacobian;
-  PetscVec m_x, m_f, m_evaluated_at;
+  // The operator: the exact Jacobian (m_matrix_free, differences of F) plus the stress–velocity
+  // correction m_correction (step_equations.hpp); m_jacobian, the assembled linearization, is
+  // its preconditioner.
+  static PetscErrorCode apply_operator(Mat A, Vec x, Vec y);
+  PetscMat m_jacobian, m_correction, m_matrix_free, m_operator;
+  PetscVec m_x, m_f, m_evaluated_at, m_column_scales;
   // The step being solved.
   run::FlowState* m_state = nullptr;
   WorstCells* m_worst = nullptr;

@@ -274,13 +274,96 @@ void StepEquations::continuity_residual(const run::FlowState& state, PetscScalar
   }
 }
 
-void StepEquations::jacobian(const run::FlowState& state, Mat J) {
+void StepEquations::update_stress_direction() {
+  const auto& f = m_fields;
+  const std::size_t local = f.flow_index.size();
+  auto& S = m_stress_direction;
+  if (S[0].size() != local) {
+    S = f.strain_direction;  // the first linearization: S = N
+  } else {
+    for (std::size_t i = 0; i < local; ++i) {
+      const double rate = m_updated_rate[i];
+      if (!(rate > 0.0)) {
+        for (int c = 0; c < 6; ++c) S[static_cast<std::size_t>(c)][i] = f.strain_direction[static_cast<std::size_t>(c)][i];
+        continue;
+      }
+      // 2 N:δD, an off-diagonal pair counted twice.
+      double projection = 0.0;
+      std::array<double, 6> change{};
+      for (int c = 0; c < 6; ++c) {
+        const auto uc = static_cast<std::size_t>(c);
+        change[uc] = f.strain_direction[uc][i] * f.strain_rate[i] - m_updated_tensor[uc][i];
+        projection += (c < 3 ? 2.0 : 4.0) * m_updated_tensor[uc][i] / rate * change[uc];
+      }
+      double norm = 0.0;
+      for (int c = 0; c < 6; ++c) {
+        const auto uc = static_cast<std::size_t>(c);
+        S[uc][i] += (change[uc] - S[uc][i] * projection) / rate;
+        norm += (c < 3 ? 2.0 : 4.0) * S[uc][i] * S[uc][i];
+      }
+      if (norm > 1.0)
+        for (int c = 0; c < 6; ++c) S[static_cast<std::size_t>(c)][i] /= std::sqrt(norm);
+    }
+  }
+  m_updated_rate = f.strain_rate;
+  for (int c = 0; c < 6; ++c) {
+    const auto uc = static_cast<std::size_t>(c);
+    m_updated_tensor[uc].resize(local);
+    for (std::size_t i = 0; i < local; ++i) m_updated_tensor[uc][i] = f.strain_direction[uc][i] * f.strain_rate[i];
+  }
+}
+
+void StepEquations::assemble_tangent_rows(const run::FlowState& state,
+                                          const std::array<std::vector<double>, 6>& direction,
+                                          std::array<std::vector<MomentumRow>, 3>& rows) {
+  tangent_factors(m_fields, direction, m_fields.tangent_factor);
+  const MomentumAssemblyInputs inputs{m_discretization, m_settings, *m_old, m_dt, m_fields, m_carried, m_gas_source};
+  for (int d = 0; d < 3; ++d)
+    if (m_discretization.velocity_numbering(d).total_rows > 0)
+      assemble_momentum_rows(inputs, solids, d, state, m_walls, false, rows[static_cast<std::size_t>(d)], m_scratch);
+}
+
+void StepEquations::jacobian(const run::FlowState& state, Mat J, Mat Q, bool stress_velocity) {
   const Discretization& disc = m_discretization;
   const auto& layout = disc.layout();
   const auto& moves = m_settings.moves;
   const StepUnknowns& x = m_unknowns;
   petsc_check(MatZeroEntries(J), "MatZeroEntries");
+  petsc_check(MatZeroEntries(Q), "MatZeroEntries");
   JacobianRow row;
+  stress_velocity = stress_velocity && moves[solids] && m_closures.stress();
+  if (stress_velocity) {
+    // The solids rows with S's tangent (into m_rows, which the preconditioner takes) and with
+    // N's (m_tangent_rows); Q is their difference. The residual's rows are Picard's again after.
+    const auto picard = m_fields.tangent_factor;
+    m_closures.evaluate_flow_index(m_fields);
+    update_stress_direction();
+    assemble_tangent_rows(state, m_fields.strain_direction, m_tangent_rows);
+    assemble_tangent_rows(state, m_stress_direction, m_rows[solids]);
+    m_fields.tangent_factor = picard;
+    for (int d = 0; d < 3; ++d) {
+      const auto ud = static_cast<std::size_t>(d);
+      const auto& numbering = disc.velocity_numbering(d);
+      if (numbering.total_rows == 0) continue;
+      std::unordered_map<std::int64_t, int> local_of;
+      for (int l = 0; l < layout.local_count(); ++l)
+        if (const auto global = numbering.global[static_cast<std::size_t>(l)]; global >= 0) local_of[global] = l;
+      const Block block = StepUnknowns::velocity_block(solids, d);
+      for (std::size_t r = 0; r < numbering.owned_locals.size(); ++r) {
+        const MomentumRow& with_s = m_rows[solids][ud][r];
+        const MomentumRow& with_n = m_tangent_rows[ud][r];
+        if (!with_s.active) continue;
+        const int l = numbering.owned_locals[r];
+        row.start(x.index(block, l));
+        row.add(x.index(block, l), with_s.a - with_n.a);
+        for (int k = 0; k < with_s.count; ++k)
+          row.add(x.index(block, local_of.at(with_s.columns[k])), with_s.values[k] - with_n.values[k]);
+        row.insert(Q, m_scale[static_cast<std::size_t>(x.block_offset(block) + static_cast<std::int64_t>(r))]);
+      }
+    }
+  }
+  petsc_check(MatAssemblyBegin(Q, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
+  petsc_check(MatAssemblyEnd(Q, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
   for (int d = 0; d < 3; ++d) {
     const auto ud = static_cast<std::size_t>(d);
     const auto& numbering = disc.velocity_numbering(d);
@@ -397,4 +480,30 @@ void StepEquations::jacobian(const run::FlowState& state, Mat J) {
   petsc_check(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
 }
 
+}  // namespace bagnold::solver
+
+namespace bagnold::solver {
+std::string StepEquations::describe_row(const run::FlowState& state, int equation, int local) const {
+  if (equation >= mixture_continuity || local < 0) return "";
+  const int phase = equation < solids_momentum_x ? gas : solids, d = equation % 3;
+  const auto& numbering = m_discretization.velocity_numbering(d);
+  std::size_t r = 0;
+  while (r < numbering.owned_locals.size() && numbering.owned_locals[r] != local) ++r;
+  if (r == numbering.owned_locals.size()) return "";
+  const MomentumRow& m = m_rows[static_cast<std::size_t>(phase)][static_cast<std::size_t>(d)][r];
+  const int n = m_discretization.layout().neighbour(local, 2 * d + 1);
+  auto cell = [&](int c) {
+    const auto i = static_cast<std::size_t>(c);
+    char buffer[300];
+    std::snprintf(buffer, sizeof buffer, "[eps %.6f Ps %.4g K %.3g mu %.3g rate %.3g n %.3g]", state.solids_fraction[i],
+                  state.solids_pressure[i], m_fields.pressure_derivative[i], m_fields.viscosity[1][i], m_fields.strain_rate[i],
+                  m_fields.flow_index.empty() ? -1.0 : m_fields.flow_index[i]);
+    return std::string(buffer);
+  };
+  const auto& u = (phase == gas ? state.gas_velocity : state.solids_velocity)[static_cast<std::size_t>(d)];
+  char buffer[400];
+  std::snprintf(buffer, sizeof buffer, "a %.4g b %.4g nbu %.4g u %.4g force %.4g viscous %.4g weight %.4g", m.a, m.b,
+                m.neighbours_u, u[static_cast<std::size_t>(local)], m.force, m.viscous, m.weight);
+  return std::string(buffer) + " c" + cell(local) + " n" + cell(n);
+}
 }  // namespace bagnold::solver

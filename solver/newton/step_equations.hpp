@@ -23,11 +23,27 @@
 // TVD correction, the viscosity's dependence on ε_s) makes it the Picard linearization of those
 // terms; the Newton solve takes it as its Jacobian or, with -newton_snes_mf_operator, as the
 // preconditioner of the exact, matrix-free one.
+//
+// The stress–velocity linearization (Rudi, Shih & Stadler 2020, G-cubed 21, e2020GC009059, Sec. 3):
+// the exact tangent of a viscosity μ_s(γ̇) is δτ = 2 μ_s (δD + (n − 1) N (N:δD)), n = dln τ/dln γ̇
+// and N = D/γ̇ the strain direction; a rate-independent (frictional) stress has n = 0, and where
+// it stands rigid (γ̇ → 0, N the direction of round-off) this tangent has no stiffness along N:
+// Newton's direction there is not one of descent and the step stalls. The stress–velocity
+// Newton replaces the second N by a stress direction S of its own, updated after each Newton
+// iteration from the linearized relation S γ̇ = D,
+//     S ← S + (δD − S (2 N:δD))/γ̇,   then projected onto 2 S:S ≤ 1,
+// so that S = N where the material yields and |S| < 1 where it stands, and the tangent
+// 2 μ_s (δD + (n − 1) N (S:δD)) keeps its stiffness there. Here the solids' viscous rows take
+// it in the diagonal form of ClosureFields::tangent_factor (per face component (a, b):
+// 1 + w (n − 1) N_ab S_ab); the step's Jacobian is the exact one (matrix-free) plus Q, the
+// difference between these rows with S and with N, so only the rate-independent part changes.
+// The residual, and with it the converged step, is the same.
 
 #include <petscmat.h>
 #include <petscvec.h>
 
 #include <array>
+#include <string>
 #include <vector>
 
 #include "solver/newton/step_unknowns.hpp"
@@ -46,6 +62,7 @@ class StepEquations {
                 const std::array<std::vector<double>, 3>& gas_source);
 
   const StepUnknowns& unknowns() const { return m_unknowns; }
+  StepUnknowns& unknowns() { return m_unknowns; }
   // A new step from `old` over dt: the next evaluation fixes the rows' scales and refreshes the
   // partial-slip walls' coefficients.
   void start_step(const run::FlowState& old, double dt);
@@ -53,11 +70,14 @@ class StepEquations {
   // residual into f, the sums the step is judged by into `sums` (local, not reduced), and the
   // largest row of each equation into `worst`.
   void residual(run::FlowState& state, Vec f, IterationSums& sums, WorstCells& worst);
-  // The Jacobian at the state of the last residual() into J (assembled).
-  void jacobian(const run::FlowState& state, Mat J);
+  // The assembled linearization at the state of the last residual() into P. With
+  // `stress_velocity`, also the stress–velocity correction of the solids' viscous rows into Q
+  // (below); otherwise Q is left empty.
+  void jacobian(const run::FlowState& state, Mat P, Mat Q, bool stress_velocity);
   // The closures and rows of the last residual(): what conserve_solids needs after convergence.
   const CarriedFractions& carried() const { return m_carried; }
   const ClosureFields& fields() const { return m_fields; }
+  std::string describe_row(const run::FlowState& state, int equation, int local) const;  // DEBUG
   // Creates J with its rows' preallocation (collective).
   void create_matrix(Mat* J) const;
 
@@ -80,6 +100,16 @@ class StepEquations {
   ClosureFields m_fields;
   CarriedFractions m_carried;
   std::array<std::array<std::vector<MomentumRow>, 3>, 2> m_rows;  // [phase][d], per owned row
+  // The stress–velocity linearization: S per symmetric component and local cell (empty until the
+  // first Jacobian), the strain-rate tensor and γ̇ where S was last updated, the solids rows
+  // with N's tangent, and the factors.
+  std::array<std::vector<double>, 6> m_stress_direction, m_updated_tensor;
+  std::vector<double> m_updated_rate;
+  std::array<std::vector<MomentumRow>, 3> m_tangent_rows;
+  std::array<std::vector<double>, 6> m_factors;
+  void update_stress_direction();
+  void assemble_tangent_rows(const run::FlowState& state, const std::array<std::vector<double>, 6>& direction,
+                             std::array<std::vector<MomentumRow>, 3>& rows);
   MomentumAssemblyScratch m_scratch;
   // Per equation, the mean over its rows of what it is normalized by, fixed at the step's first
   // evaluation; per solids row, the force its fraction error makes per unit imbalance, fixed then

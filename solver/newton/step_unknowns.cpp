@@ -47,6 +47,40 @@ double& StepUnknowns::value(Block block, run::FlowState& state, int local) const
   return block == pressure ? state.gas_pressure[l] : state.solids_fraction[l];
 }
 
+void StepUnknowns::set_scales(double velocity, double pressure_scale) {
+  for (int b = 0; b < static_cast<int>(pressure); ++b) m_scale[static_cast<std::size_t>(b)] = velocity;
+  m_scale[pressure] = pressure_scale;
+  m_scale[fraction] = 1.0;
+  m_row_scale.resize(static_cast<std::size_t>(m_owned));
+  for (int b = 0; b < block_count; ++b) {
+    const auto offset = m_offset[static_cast<std::size_t>(b)];
+    const auto rows = static_cast<std::int64_t>(owned_locals(static_cast<Block>(b)).size());
+    for (std::int64_t r = offset; r < offset + rows; ++r) m_row_scale[static_cast<std::size_t>(r)] = m_scale[static_cast<std::size_t>(b)];
+  }
+}
+
+void StepUnknowns::set_origin(const run::FlowState& state) {
+  m_origin.resize(static_cast<std::size_t>(m_owned));
+  auto& mutable_state = const_cast<run::FlowState&>(state);  // value() only reads here
+  for (int b = 0; b < block_count; ++b) {
+    const auto& locals = owned_locals(static_cast<Block>(b));
+    const auto offset = m_offset[static_cast<std::size_t>(b)];
+    for (std::size_t r = 0; r < locals.size(); ++r)
+      m_origin[static_cast<std::size_t>(offset) + r] = value(static_cast<Block>(b), mutable_state, locals[r]);
+  }
+}
+
+void StepUnknowns::fill_scales(Vec scales) const {
+  PetscScalar* values = nullptr;
+  petsc_check(VecGetArray(scales, &values), "VecGetArray");
+  for (int b = 0; b < block_count; ++b) {
+    const auto offset = m_offset[static_cast<std::size_t>(b)];
+    const auto rows = static_cast<std::int64_t>(owned_locals(static_cast<Block>(b)).size());
+    for (std::int64_t r = offset; r < offset + rows; ++r) values[r] = m_scale[static_cast<std::size_t>(b)];
+  }
+  petsc_check(VecRestoreArray(scales, &values), "VecRestoreArray");
+}
+
 void StepUnknowns::gather(const run::FlowState& state, Vec x) const {
   PetscScalar* values = nullptr;
   petsc_check(VecGetArray(x, &values), "VecGetArray");
@@ -55,7 +89,8 @@ void StepUnknowns::gather(const run::FlowState& state, Vec x) const {
     const auto& locals = owned_locals(static_cast<Block>(b));
     const auto offset = m_offset[static_cast<std::size_t>(b)];
     for (std::size_t r = 0; r < locals.size(); ++r)
-      values[offset + static_cast<std::int64_t>(r)] = value(static_cast<Block>(b), mutable_state, locals[r]);
+      values[offset + static_cast<std::int64_t>(r)] =
+          entry(offset + static_cast<std::int64_t>(r), value(static_cast<Block>(b), mutable_state, locals[r]));
   }
   petsc_check(VecRestoreArray(x, &values), "VecRestoreArray");
 }
@@ -67,7 +102,9 @@ void StepUnknowns::scatter(Vec x, run::FlowState& state) const {
     const auto& locals = owned_locals(static_cast<Block>(b));
     const auto offset = m_offset[static_cast<std::size_t>(b)];
     for (std::size_t r = 0; r < locals.size(); ++r)
-      value(static_cast<Block>(b), state, locals[r]) = values[offset + static_cast<std::int64_t>(r)];
+      value(static_cast<Block>(b), state, locals[r]) =
+          m_origin[static_cast<std::size_t>(offset) + r] +
+          values[offset + static_cast<std::int64_t>(r)] * m_scale[static_cast<std::size_t>(b)];
   }
   petsc_check(VecRestoreArrayRead(x, &values), "VecRestoreArrayRead");
   const auto& layout = m_discretization.layout();

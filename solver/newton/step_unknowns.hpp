@@ -40,6 +40,20 @@ class StepUnknowns {
   // The local offset (within this rank's rows) of a block's first row.
   std::int64_t block_offset(Block block) const { return m_offset[static_cast<std::size_t>(block)]; }
 
+  // The vector holds each unknown's change from an origin (set_origin: the step's start) in
+  // units of its block's scale (set_scales), so that its entries vary by comparable amounts: a
+  // velocity in units of a reference speed, the gas pressure (10⁵ Pa absolute, changing by a few
+  // Pa) in units of a reference pressure, the fraction as it is. The matrix-free Jacobian
+  // differences F along this vector with a step relative to its size: on absolute pressures that
+  // step would be far too coarse for the velocities.
+  void set_scales(double velocity, double pressure_scale);
+  void set_origin(const run::FlowState& state);
+  // The entry of the owned row r (within the rank) that stands for the value `value`.
+  double entry(std::int64_t r, double value) const { return (value - m_origin[static_cast<std::size_t>(r)]) / m_row_scale[static_cast<std::size_t>(r)]; }
+  double scale(Block block) const { return m_scale[static_cast<std::size_t>(block)]; }
+  // Per owned row, the scale of its unknown (for the Jacobian's columns).
+  void fill_scales(Vec scales) const;
+
   // The state's unknowns into `x` (this rank's rows).
   void gather(const run::FlowState& state, Vec x) const;
   // `x` into the state's unknowns, halos exchanged; ε_g = 1 − ε_s in fluid cells.
@@ -51,6 +65,8 @@ class StepUnknowns {
   std::array<bool, block_count> m_present{};
   std::array<std::vector<std::int64_t>, block_count> m_index;
   std::array<std::int64_t, block_count> m_offset{};
+  std::array<double, block_count> m_scale{1, 1, 1, 1, 1, 1, 1, 1};
+  std::vector<double> m_origin, m_row_scale;  // per owned row
   std::int64_t m_first = 0, m_owned = 0, m_total = 0;
   std::vector<int> m_none;
 };

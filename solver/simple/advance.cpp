@@ -88,9 +88,18 @@ StepResult FlowSolver::advance(run::FlowState& state, const run::FlowState& old,
   const ScopedWorkClock clock(ScopedWorkClock::step);  // this rank's balance (work_clock.hpp)
   if (m_newton) {
     StepResult result = m_newton->advance(state, old, dt, m_fields.worst, stop_probe);
-    if (result.converged && m_fraction)
+    if (result.converged && m_fraction) {
       m_stepped_solids_flux = conserve_solids(m_discretization, m_newton->carried(), m_settings.density[solids], old,
                                               dt, state);
+      // A cell the step empties can end a round-off below zero (its imbalance is within the
+      // tolerance, not zero): held at zero, as the fraction correction holds it.
+      double clamped = 0.0;
+      for (const int l : m_discretization.cell_numbering().owned_locals)
+        if (auto& eps = state.solids_fraction[static_cast<std::size_t>(l)]; eps < 0.0) eps = 0.0, clamped += 1.0;
+      result.interventions[fraction_clamped_at_zero] += m_discretization.layout().comm().sum(clamped);
+      parallel::exchange_halo<double>(m_discretization.layout(), state.solids_fraction);
+      update_gas_fraction(m_discretization, state);
+    }
     return result;
   }
   StepResult result;

@@ -32,7 +32,8 @@ Closures::Closures(const deck::Deck& deck, const Discretization& discretization)
       m_gas_moves(deck.gas.enabled),
       m_newton(deck::choice_value(deck::viscosity_linearization_choices,
                                   deck.numerics.viscosity_linearization, "viscosity linearization") ==
-               deck::ViscosityLinearization::newton) {
+               deck::ViscosityLinearization::newton),
+      m_keep_tensor(m_newton || deck.numerics.step_solver == "newton") {
   const auto& domain = discretization.domain();
   if (deck.solids.enabled && deck.gas.enabled)
     m_drag = models::drag_registry().create(deck.models.drag.name, deck.models.drag.coefficients);
@@ -70,7 +71,7 @@ Closures::Closures(const deck::Deck& deck, const Discretization& discretization)
                   &m_derivative, &m_shear, &m_bulk, &m_temperature, &m_transported, &m_drag_at,
                   &m_unused[0], &m_unused[1], &m_unused[2]})
     v->resize(local);
-  if (m_newton)
+  if (m_keep_tensor)
     for (auto* v : {&m_probe_rate, &m_probe_divergence, &m_probe_shear}) v->resize(local);
 }
 
@@ -107,7 +108,7 @@ void Closures::evaluate_solids_stress(const Discretization& discretization, run:
   if (!m_stress) return;
 
   compute_strain_rate(discretization, state.solids_velocity, fields.strain_rate,
-                      fields.divergence[solids], m_strain_rate_ghosts, m_newton ? &m_tensor : nullptr);
+                      fields.divergence[solids], m_strain_rate_ghosts, m_keep_tensor ? &m_tensor : nullptr);
   const double weight = m_relaxation_time > 0.0 ? dt / m_relaxation_time : 0.0;
   const bool transported = m_stress->granular_energy() != nullptr;
   m_cells.clear();
@@ -159,14 +160,16 @@ void Closures::evaluate_solids_stress(const Discretization& discretization, run:
   }
   for (const auto& [outflow, fluid] : m_outflow_copies)
     state.solids_pressure[static_cast<std::size_t>(outflow)] = state.solids_pressure[static_cast<std::size_t>(fluid)];
-  if (m_newton) evaluate_tangent_factors(n, in, fields);
+  m_last_input = in;
+  if (m_newton) evaluate_tangent_factors(fields);
 }
 
-void Closures::evaluate_tangent_factors(std::size_t n, const models::SolidsState& in,
-                                        ClosureFields& fields) {
+void Closures::evaluate_flow_index(ClosureFields& fields) {
   // μ_s at the same state with D scaled by 1 + h: n − 1 = dln μ_s/dln γ̇ by a forward difference
   // (the closures have kinks, a cap among them; n is then that of the side the iterate is on).
   constexpr double h = 1e-4;
+  const models::SolidsState& in = m_last_input;
+  const std::size_t n = m_cells.size();
   auto part = [n](std::vector<double>& v) { return std::span<double>(v.data(), n); };
   for (std::size_t k = 0; k < n; ++k) {
     m_probe_rate[k] = (1.0 + h) * m_rate[k];
@@ -180,21 +183,37 @@ void Closures::evaluate_tangent_factors(std::size_t n, const models::SolidsState
                            part(m_unused[2]), part(m_temperature)};
   m_stress->evaluate(m_material, probe, out);
   const std::size_t local = fields.strain_rate.size();
-  for (auto& factor : fields.tangent_factor) factor.assign(local, 1.0);
+  fields.flow_index.assign(local, 1.0);
+  for (auto& component : fields.strain_direction) component.assign(local, 0.0);
   const double log_step = std::log1p(h);
   for (std::size_t k = 0; k < n; ++k) {
     const auto i = static_cast<std::size_t>(m_cells[k]);
     const double mu = m_shear[k], mu_probe = m_probe_shear[k], rate = fields.strain_rate[i];
     if (!(mu > 0.0 && mu_probe > 0.0 && rate > 0.0)) continue;
     // n ≥ 0: a stress that falls with the rate would make the implicit viscosity negative.
-    const double index = std::max(1.0 + std::log(mu_probe / mu) / log_step, 0.0);
-    for (int a = 0; a < 3; ++a)
-      for (int b = a; b < 3; ++b) {
-        const auto c = static_cast<std::size_t>(symmetric_component(a, b));
-        const double component = m_tensor[c][i] / rate;  // N_ab² = 2 D_ab²/γ̇²
-        fields.tangent_factor[c][i] = 1.0 + (a == b ? 2.0 : 4.0) * (index - 1.0) * component * component;
-      }
+    fields.flow_index[i] = std::max(1.0 + std::log(mu_probe / mu) / log_step, 0.0);
+    for (int c = 0; c < 6; ++c)
+      fields.strain_direction[static_cast<std::size_t>(c)][i] = m_tensor[static_cast<std::size_t>(c)][i] / rate;
   }
+}
+
+void tangent_factors(const ClosureFields& fields, const std::array<std::vector<double>, 6>& direction,
+                     std::array<std::vector<double>, 6>& factors) {
+  const std::size_t local = fields.flow_index.size();
+  for (int a = 0; a < 3; ++a)
+    for (int b = a; b < 3; ++b) {
+      const auto c = static_cast<std::size_t>(symmetric_component(a, b));
+      auto& factor = factors[c];
+      factor.resize(local);
+      const double weight = a == b ? 2.0 : 4.0;  // 2 N:δD counts an off-diagonal pair twice
+      for (std::size_t i = 0; i < local; ++i)
+        factor[i] = 1.0 + weight * (fields.flow_index[i] - 1.0) * fields.strain_direction[c][i] * direction[c][i];
+    }
+}
+
+void Closures::evaluate_tangent_factors(ClosureFields& fields) {
+  evaluate_flow_index(fields);
+  tangent_factors(fields, fields.strain_direction, fields.tangent_factor);
 }
 
 }  // namespace bagnold::solver

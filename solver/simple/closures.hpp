@@ -43,6 +43,13 @@ namespace bagnold::solver {
 // |u_g − u_s| at the centre of local cell l, from both phases' centre velocities.
 double centre_slip_speed(const parallel::Layout& layout, const run::FlowState& state, int l);
 
+// The tangent viscosity factors of ClosureFields::tangent_factor, 1 + w (n − 1) N_ab S_ab per
+// symmetric component (w = 2 on the diagonal, 4 off it), from the fields' flow index n and strain
+// direction N, with `direction` S in place of the second N: S = N gives the Newton tangent of
+// τ = 2 μ_s(γ̇) D; the stress–velocity linearization (step_equations.hpp) takes its own S.
+void tangent_factors(const ClosureFields& fields, const std::array<std::vector<double>, 6>& direction,
+                     std::array<std::vector<double>, 6>& factors);
+
 class Closures {
  public:
   Closures(const deck::Deck& deck, const Discretization& discretization);
@@ -54,6 +61,11 @@ class Closures {
 
   // The time at which the step being solved starts [s] (where the bulk viscosity ends).
   void set_step_start(double time) { m_step_start = time; }
+
+  // ClosureFields::flow_index and strain_direction at the state of the last evaluate() (a second
+  // closure evaluation; kept only when the solids move and the tensor is kept: under
+  // numerics.viscosity_linearization = "newton" or numerics.step_solver = "newton").
+  void evaluate_flow_index(ClosureFields& fields);
 
   // The solids-stress model, null unless the solids move.
   const models::SolidsStressModel* stress() const { return m_stress.get(); }
@@ -89,8 +101,9 @@ class Closures {
   StrainTensor m_tensor;  // D per local cell (Newton only)
   std::vector<double> m_probe_rate, m_probe_divergence, m_probe_shear;  // the evaluation at (1 + h) D
 
-  void evaluate_tangent_factors(std::size_t n, const models::SolidsState& in,
-                                ClosureFields& fields);
+  bool m_keep_tensor = false;  // D per cell kept: for the tangent or the Newton step
+  models::SolidsState m_last_input;  // the last evaluation's inputs (spans into the scratch above)
+  void evaluate_tangent_factors(ClosureFields& fields);
 };
 
 }  // namespace bagnold::solver

@@ -22,6 +22,11 @@ struct ClosureFields {
   // carry ∂_b u_a over μ_s: 1 + (n − 1) N_ab² (a = b) or 1 + 2 (n − 1) N_ab² (a ≠ b), with
   // n = dln τ/dln γ̇ and N = √2 D/γ̇ (closures.cpp). Empty under Picard.
   std::array<std::vector<double>, 6> tangent_factor;
+  // Closures::evaluate_flow_index: per cell the flow index n = dln τ/dln γ̇ of the closure at its
+  // strain rate (1 where the cell has none), and per symmetric component the strain direction
+  // N_ab = D_ab/γ̇ (2 N:N = 1; 0 where γ̇ = 0). Empty until evaluated.
+  std::vector<double> flow_index;
+  std::array<std::vector<double>, 6> strain_direction;
 };
 
 // The fraction of each phase carried through each face (per phase, direction d, owning cell):

@@ -32,13 +32,16 @@ SolverSettings::SolverSettings(const deck::Deck& deck, const parallel::Domain& d
       coupled_solids_momentum(deck::choice_value(deck::solids_momentum_choices, deck.numerics.solids_momentum,
                                                  "solids momentum") == deck::SolidsMomentum::coupled),
       step_solver(deck::choice_value(deck::step_solver_choices, deck.numerics.step_solver, "step solver")),
+      stress_velocity(deck::choice_value(deck::newton_linearization_choices, deck.numerics.newton_linearization,
+                                         "Newton linearization") == deck::NewtonLinearization::stress_velocity),
       vacant_fraction(deck.numerics.vacant_fraction) {
-  double extent = 0.0, g2 = 0.0;
+  double largest = 0.0, g2 = 0.0;
   for (int d = 0; d < 3; ++d) {
-    extent = std::max(extent, domain.grid.axis(d).faces().back() - domain.grid.axis(d).faces().front());
+    largest = std::max(largest, domain.grid.axis(d).faces().back() - domain.grid.axis(d).faces().front());
     g2 += gravity[static_cast<std::size_t>(d)] * gravity[static_cast<std::size_t>(d)];
   }
   gravity_magnitude = std::sqrt(g2);
+  extent = largest;
   reference_speed = std::sqrt(gravity_magnitude * extent);
   for (const auto& region : domain.regions.regions)
     for (int d = 0; d < 3; ++d)

@@ -22,6 +22,7 @@ struct SolverSettings {
   double gravity_magnitude = 0.0;           // |g| [m/s²]
   // The fastest boundary velocity, or the free-fall speed sqrt(|g| L) over the domain [m/s].
   double reference_speed = 1.0;
+  double extent = 1.0;  // the domain's largest extent [m]
   // The least velocity residuals are judged against [m/s], 1e-3 of the reference speed: a fluid
   // at rest is then measured against a small velocity change, not against round-off.
   double least_speed = 1e-3;
@@ -46,6 +47,7 @@ struct SolverSettings {
   deck::ViscosityLinearization viscosity_linearization = deck::ViscosityLinearization::picard;
   bool coupled_solids_momentum = false;  // numerics.solids_momentum = "coupled"
   deck::StepSolver step_solver = deck::StepSolver::outer_iteration;  // numerics.step_solver
+  bool stress_velocity = true;  // numerics.newton_linearization = "stress-velocity"
   double vacant_fraction = 1e-8;  // numerics.vacant_fraction: Θ = 0 at or below this ε_s
 };
 

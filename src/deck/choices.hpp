@@ -79,6 +79,11 @@ enum class StepSolver { outer_iteration, newton };
 inline constexpr std::array<Choice<StepSolver>, 2> step_solver_choices{
     {{"outer-iteration", StepSolver::outer_iteration}, {"newton", StepSolver::newton}}};
 
+// numerics.newton_linearization: the Jacobian of the Newton step (solver/newton/step_equations.hpp).
+enum class NewtonLinearization { stress_velocity, exact };
+inline constexpr std::array<Choice<NewtonLinearization>, 2> newton_linearization_choices{
+    {{"stress-velocity", NewtonLinearization::stress_velocity}, {"exact", NewtonLinearization::exact}}};
+
 // numerics.algorithm: the pressure-velocity coupling (solver/simple/momentum_predictor.cpp).
 enum class Coupling { simplec, simple };
 inline constexpr std::array<Choice<Coupling>, 2> coupling_choices{

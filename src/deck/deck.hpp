@@ -157,6 +157,7 @@ struct Numerics {
   std::string viscosity_linearization = "picard";  // picard | newton
   std::string solids_momentum = "segregated";  // segregated | coupled
   std::string step_solver = "outer-iteration";  // outer-iteration | newton
+  std::string newton_linearization = "stress-velocity";  // stress-velocity | exact
   double solids_bulk_viscosity_ratio = 0.0;  // r μ_s added to the closure's λ_s
   double solids_bulk_viscosity_until = std::numeric_limits<double>::infinity();  // [s]: in steps starting before
   double pressure_shear_rate_relaxation_time = 0.0;  // τ_P [s]: P_s at γ̇ relaxed over τ_P

@@ -438,6 +438,15 @@ const Section<Numerics>& numerics_section() {
                "numerics.max_outer_iterations bounds the Newton iterations. The same equations "
                "and the same convergence test either way (docs/solver.md, \"Newton on the whole step\"). "
                "Not with a transported granular energy."),
+      key(&Numerics::newton_linearization, "newton_linearization").init()
+          .one_of(choice_names(newton_linearization_choices))
+          .doc("The Jacobian of numerics.step_solver = \"newton\". exact: the derivative of the "
+               "step's equations (applied matrix-free). stress-velocity: the same, except that the "
+               "solids' rate-independent (frictional, plastic) stress is linearized with a stress "
+               "direction of its own instead of the strain direction (Rudi, Shih & Stadler 2020), "
+               "which keeps the stiffness of a zone that stands rigid; the exact derivative has none "
+               "there, and Newton stalls in a bin's stagnant corners. Only the path to the solution "
+               "differs: the converged step is the same."),
       key(&Numerics::solids_bulk_viscosity_ratio, "solids_bulk_viscosity_ratio").unit("-").init()
           .within(0.0, 100.0)
           .doc("r: a bulk viscosity r μ_s added to the closure's own λ_s (σ = −P_s I + 2 μ_s D + "

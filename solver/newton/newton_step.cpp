@@ -77,7 +77,7 @@ NewtonStep::NewtonStep(const Discretization& discretization, const SolverSetting
   petsc_check(SNESLineSearchSetType(search, SNESLINESEARCHBT), "SNESLineSearchSetType");
   petsc_check(SNESSetFromOptions(snes), "SNESSetFromOptions");
   petsc_check(SNESLineSearchSetPostCheck(search, post_check, this), "SNESLineSearchSetPostCheck");
-  if (m_equations.unknowns().present(StepUnknowns::fraction) && !std::getenv("BAGNOLD_NO_PRECHECK")) {
+  if (m_equations.unknowns().present(StepUnknowns::fraction)) {
     m_compression = std::make_unique<CompressionLimit>(discretization, settings, closures);
     m_fraction_change.assign(static_cast<std::size_t>(discretization.layout().local_count()), 0.0);
     petsc_check(SNESLineSearchSetPreCheck(search, pre_check, this), "SNESLineSearchSetPreCheck");
@@ -95,16 +95,7 @@ void NewtonStep::evaluate(Vec x, Vec f) {
   sums.reduce(m_discretization.layout().comm());
   if (sums.stop > 0.0) m_result.abandoned = true;
   StepResult& result = m_result;
-  result.force_balance = 0.0;
-  result.force_balance_equation = 0;
-  for (int e = 0; e < 6; ++e) {
-    const auto& momentum = sums.momentum[static_cast<std::size_t>(e)];
-    result.residuals.value[static_cast<std::size_t>(e)] = sums.normalization[static_cast<std::size_t>(e)].value(momentum);
-    if (const double balance = MomentumResidual::force_balance(momentum); balance > result.force_balance) {
-      result.force_balance = balance;
-      result.force_balance_equation = e;
-    }
-  }
+  judge_momentum(sums, result);
   for (int c = 0; c < 2; ++c) {
     const auto& [imbalance, throughput] = sums.continuity[static_cast<std::size_t>(c)];
     const bool solved = m_equations.unknowns().present(c == 0 ? StepUnknowns::pressure : StepUnknowns::fraction);
@@ -172,7 +163,6 @@ PetscErrorCode NewtonStep::converged(SNES, PetscInt iteration, PetscReal, PetscR
       std::fprintf(stderr, "  newton %d:", static_cast<int>(iteration));
       for (const double r : self->m_result.residuals.value) std::fprintf(stderr, " %.3e", r);
       std::fprintf(stderr, "  worst %s in %s\n", equation_name(worst), where.text().c_str());
-      if (std::getenv("BAGNOLD_DEBUG")) std::fprintf(stderr, "    %s\n", self->m_equations.describe_row(*self->m_state, worst, self->m_worst->local(worst)).c_str());
     }
   }
   *reason = SNES_CONVERGED_ITERATING;

@@ -65,6 +65,12 @@ StepEquations::StepEquations(const Discretization& discretization, const SolverS
       m_fields(static_cast<std::size_t>(discretization.layout().local_count())),
       m_carried(static_cast<std::size_t>(discretization.layout().local_count())) {
   m_scale.assign(static_cast<std::size_t>(m_unknowns.owned_rows()), 1.0);
+  const auto& layout = discretization.layout();
+  for (int d = 0; d < 3; ++d) {
+    const auto& global = discretization.velocity_numbering(d).global;
+    for (int l = 0; l < layout.local_count(); ++l)
+      if (global[static_cast<std::size_t>(l)] >= 0) m_local_of[static_cast<std::size_t>(d)][global[static_cast<std::size_t>(l)]] = l;
+  }
   m_fraction_force.assign(static_cast<std::size_t>(discretization.layout().local_count()), 0.0);
   m_pin_pressure = m_unknowns.present(StepUnknowns::pressure) && !discretization.faces(gas).has_pressure_boundary &&
                    discretization.layout().comm().is_root() &&
@@ -345,9 +351,7 @@ void StepEquations::jacobian(const run::FlowState& state, Mat J, Mat Q, bool str
       const auto ud = static_cast<std::size_t>(d);
       const auto& numbering = disc.velocity_numbering(d);
       if (numbering.total_rows == 0) continue;
-      std::unordered_map<std::int64_t, int> local_of;
-      for (int l = 0; l < layout.local_count(); ++l)
-        if (const auto global = numbering.global[static_cast<std::size_t>(l)]; global >= 0) local_of[global] = l;
+      const auto& local_of = m_local_of[ud];
       const Block block = StepUnknowns::velocity_block(solids, d);
       for (std::size_t r = 0; r < numbering.owned_locals.size(); ++r) {
         const MomentumRow& with_s = m_rows[solids][ud][r];
@@ -368,10 +372,7 @@ void StepEquations::jacobian(const run::FlowState& state, Mat J, Mat Q, bool str
     const auto ud = static_cast<std::size_t>(d);
     const auto& numbering = disc.velocity_numbering(d);
     if (numbering.total_rows == 0) continue;
-    // The rows name their neighbours by the velocity numbering's global index.
-    std::unordered_map<std::int64_t, int> local_of;
-    for (int l = 0; l < layout.local_count(); ++l)
-      if (const auto global = numbering.global[static_cast<std::size_t>(l)]; global >= 0) local_of[global] = l;
+    const auto& local_of = m_local_of[ud];
     for (std::size_t r = 0; r < numbering.owned_locals.size(); ++r) {
       const int l = numbering.owned_locals[r];
       const auto ul = static_cast<std::size_t>(l);
@@ -482,28 +483,3 @@ void StepEquations::jacobian(const run::FlowState& state, Mat J, Mat Q, bool str
 
 }  // namespace bagnold::solver
 
-namespace bagnold::solver {
-std::string StepEquations::describe_row(const run::FlowState& state, int equation, int local) const {
-  if (equation >= mixture_continuity || local < 0) return "";
-  const int phase = equation < solids_momentum_x ? gas : solids, d = equation % 3;
-  const auto& numbering = m_discretization.velocity_numbering(d);
-  std::size_t r = 0;
-  while (r < numbering.owned_locals.size() && numbering.owned_locals[r] != local) ++r;
-  if (r == numbering.owned_locals.size()) return "";
-  const MomentumRow& m = m_rows[static_cast<std::size_t>(phase)][static_cast<std::size_t>(d)][r];
-  const int n = m_discretization.layout().neighbour(local, 2 * d + 1);
-  auto cell = [&](int c) {
-    const auto i = static_cast<std::size_t>(c);
-    char buffer[300];
-    std::snprintf(buffer, sizeof buffer, "[eps %.6f Ps %.4g K %.3g mu %.3g rate %.3g n %.3g]", state.solids_fraction[i],
-                  state.solids_pressure[i], m_fields.pressure_derivative[i], m_fields.viscosity[1][i], m_fields.strain_rate[i],
-                  m_fields.flow_index.empty() ? -1.0 : m_fields.flow_index[i]);
-    return std::string(buffer);
-  };
-  const auto& u = (phase == gas ? state.gas_velocity : state.solids_velocity)[static_cast<std::size_t>(d)];
-  char buffer[400];
-  std::snprintf(buffer, sizeof buffer, "a %.4g b %.4g nbu %.4g u %.4g force %.4g viscous %.4g weight %.4g", m.a, m.b,
-                m.neighbours_u, u[static_cast<std::size_t>(local)], m.force, m.viscous, m.weight);
-  return std::string(buffer) + " c" + cell(local) + " n" + cell(n);
-}
-}  // namespace bagnold::solver

@@ -43,7 +43,8 @@
 #include <petscvec.h>
 
 #include <array>
-#include <string>
+#include <cstdint>
+#include <unordered_map>
 #include <vector>
 
 #include "solver/newton/step_unknowns.hpp"
@@ -77,7 +78,6 @@ class StepEquations {
   // The closures and rows of the last residual(): what conserve_solids needs after convergence.
   const CarriedFractions& carried() const { return m_carried; }
   const ClosureFields& fields() const { return m_fields; }
-  std::string describe_row(const run::FlowState& state, int equation, int local) const;  // DEBUG
   // Creates J with its rows' preallocation (collective).
   void create_matrix(Mat* J) const;
 
@@ -94,6 +94,9 @@ class StepEquations {
   SolidsWallCoefficients* m_walls;
   const std::array<std::vector<double>, 3>& m_gas_source;
   StepUnknowns m_unknowns;
+  // Per direction, the local cell of each velocity-numbering global index on this rank (the rows
+  // name their neighbours by it).
+  std::array<std::unordered_map<std::int64_t, int>, 3> m_local_of;
   const run::FlowState* m_old = nullptr;
   double m_dt = 0.0;
   bool m_first = true;  // the step's first evaluation: scales fixed, wall coefficients refreshed

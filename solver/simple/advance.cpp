@@ -135,16 +135,7 @@ StepResult FlowSolver::advance(run::FlowState& state, const run::FlowState& old,
       result.abandoned = true;
       return result;
     }
-    result.force_balance = 0.0;
-    result.force_balance_equation = 0;
-    for (int e = 0; e < 6; ++e) {
-      const auto& momentum = sums.momentum[static_cast<std::size_t>(e)];
-      result.residuals.value[static_cast<std::size_t>(e)] = sums.normalization[static_cast<std::size_t>(e)].value(momentum);
-      if (const double balance = MomentumResidual::force_balance(momentum); balance > result.force_balance) {
-        result.force_balance = balance;
-        result.force_balance_equation = e;
-      }
-    }
+    judge_momentum(sums, result);
     // A flow at rest has no throughput: measure against the flux the velocity scale would carry.
     // Under the force norm the solids' sums are forces, their scale never 0
     // (volume_fraction_correction.cpp).

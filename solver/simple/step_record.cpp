@@ -91,4 +91,17 @@ bool iteration_converged(double largest, double tolerance, const IterationSums& 
   return largest < tolerance && sums.interventions[compression_damped] == 0.0;
 }
 
+void judge_momentum(const IterationSums& sums, StepResult& result) {
+  result.force_balance = 0.0;
+  result.force_balance_equation = 0;
+  for (int e = 0; e < 6; ++e) {
+    const auto& momentum = sums.momentum[static_cast<std::size_t>(e)];
+    result.residuals.value[static_cast<std::size_t>(e)] = sums.normalization[static_cast<std::size_t>(e)].value(momentum);
+    if (const double balance = MomentumResidual::force_balance(momentum); balance > result.force_balance) {
+      result.force_balance = balance;
+      result.force_balance_equation = e;
+    }
+  }
+}
+
 }  // namespace bagnold::solver

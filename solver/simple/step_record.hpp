@@ -75,6 +75,11 @@ struct IterationSums {
 // magnitude too high (docs/solver.md, step 5).
 bool iteration_converged(double largest, double tolerance, const IterationSums& sums);
 
+// The normalized momentum residuals of reduced `sums` into result.residuals, and the largest force
+// balance (MomentumResidual::force_balance) with its equation into result.force_balance(_equation).
+struct StepResult;
+void judge_momentum(const IterationSums& sums, StepResult& result);
+
 // Where an equation's residual is largest: for the message when a run cannot continue. Always a
 // fluid cell; for a momentum equation also which of its faces carries the velocity and, when
 // that face is on the domain's boundary, the boundary region beyond it.
